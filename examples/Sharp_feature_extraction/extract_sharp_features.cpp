@@ -1,0 +1,170 @@
+// extract_sharp_features: point cloud in, sharp feature curves out.
+//
+//   extract_sharp_features INPUT -o OUT.polylines.txt [--ply OUT.ply] [overrides]
+//
+// Reads .xyz/.ply/.off points (normals ignored), runs the five stages with scales derived from the
+// data (or overridden), writes the curves in Mesh_3's polyline format and, optionally, a PLY with
+// the curve vertices, edges, both surface normals and corner flags. Prints a summary.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
+#include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
+
+#include "utilities/progress_bar.h"
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+namespace sfe = CGAL::Sharp_feature_extraction::parameters;
+
+namespace {
+
+const char* usage =
+  "usage: extract_sharp_features INPUT -o OUT.polylines.txt [options]\n"
+  "  INPUT                     point cloud: .xyz, .ply or .off (only positions are used)\n"
+  "  -o, --output FILE         curves in Mesh_3's polyline format (one per line: n x1 y1 z1 ...)\n"
+  "  --ply FILE                also write curve vertices, edges, both normals and corner flags\n"
+  "  --threads N               number of threads (default: all cores)\n"
+  "  --quiet                   no progress bar and no summary\n"
+  "overrides (default: derived from the data, see the summary):\n"
+  "  --candidate-neighbors K   stage-1 neighbourhood size\n"
+  "  --rmls-neighbors K        stage-2 neighbourhood size\n"
+  "  --threshold T             stage-1 residual threshold (distance)\n"
+  "  --rmls-tolerance D        stage-2 residual tolerance (distance)\n"
+  "  --sharpness-angle DEG     smallest angle between the normals of two surfaces (25)\n"
+  "  --corner-radius D         corner points closer than D are one corner\n"
+  "  --growth-radius D         polyline growing radius\n"
+  "  --completion-distance D   largest gap bridged by completion\n"
+  "  --smoothing-passes N      stage-3 passes (3)\n";
+
+[[noreturn]] void fail(const std::string& message)
+{
+  std::cerr << "extract_sharp_features: " << message << std::endl;
+  std::exit(1);
+}
+
+double number(const std::string& option, const char* text)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if(end == text || *end != '\0' || !(v >= 0))
+    fail("option " + option + " expects a non-negative number, got '" + text + "'");
+  return v;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::string input, output, ply;
+  int threads = 0;
+  bool quiet = false;
+  double candidate_neighbors = 0, rmls_neighbors = 0, threshold = -1, tolerance = 0, sharpness = 25;
+  double corner_radius = 0, growth_radius = 0, completion_distance = 0, passes = 3;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto value = [&]() -> const char* {
+      if(i + 1 >= argc)
+        fail("option " + a + " expects a value");
+      return argv[++i];
+    };
+    if(a == "-h" || a == "--help") { std::cout << usage; return 0; }
+    else if(a == "-o" || a == "--output") output = value();
+    else if(a == "--ply") ply = value();
+    else if(a == "--threads") threads = int(number(a, value()));
+    else if(a == "--quiet") quiet = true;
+    else if(a == "--candidate-neighbors") candidate_neighbors = number(a, value());
+    else if(a == "--rmls-neighbors") rmls_neighbors = number(a, value());
+    else if(a == "--threshold") threshold = number(a, value());
+    else if(a == "--rmls-tolerance") tolerance = number(a, value());
+    else if(a == "--sharpness-angle") sharpness = number(a, value());
+    else if(a == "--corner-radius") corner_radius = number(a, value());
+    else if(a == "--growth-radius") growth_radius = number(a, value());
+    else if(a == "--completion-distance") completion_distance = number(a, value());
+    else if(a == "--smoothing-passes") passes = number(a, value());
+    else if(!a.empty() && a[0] == '-') fail("unknown option " + a + " (see --help)");
+    else if(input.empty()) input = a;
+    else fail("more than one input file given (see --help)");
+  }
+  if(input.empty() || output.empty())
+    fail("an input file and -o OUTPUT are required (see --help)");
+
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(threads > 0)
+    thread_limit.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, threads));
+#endif
+
+  std::vector<Point> points;
+  if(!CGAL::IO::read_points(input, std::back_inserter(points)))
+    fail("cannot read points from '" + input + "' (expected a readable .xyz, .ply or .off file)");
+  if(points.empty())
+    fail("'" + input + "' contains no points");
+
+  std::function<bool(double)> progress;
+  if(!quiet)
+    progress = sfe_utilities::Terminal_progress_bar("extracting sharp features");
+  CGAL::Sharp_features<K> result;
+  try
+  {
+    const auto np = sfe::candidate_neighbors(std::size_t(candidate_neighbors),
+                    sfe::rmls_neighbors(std::size_t(rmls_neighbors),
+                    sfe::rmls_tolerance(tolerance,
+                    sfe::corner_radius(corner_radius,
+                    sfe::growth_radius(growth_radius,
+                    sfe::completion_distance(completion_distance))))))
+                      .threshold_distance(threshold)
+                      .sharpness_angle(sharpness)
+                      .number_of_iterations(unsigned(passes))
+                      .callback(progress);
+    CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(points, result, np);
+  }
+  catch(const std::exception& e)
+  {
+    fail(e.what());
+  }
+
+  std::vector<std::vector<Point>> polylines;
+  for(const auto& p : result.network.polylines)
+    polylines.push_back(p.points);
+  if(!CGAL::IO::write_polylines(output, polylines))
+    fail("cannot write '" + output + "'");
+  if(!ply.empty() && !CGAL::IO::write_PLY_feature_curves(ply, result.network))
+    fail("cannot write '" + ply + "'");
+
+  if(!quiet)
+  {
+    std::size_t loops = 0;
+    for(const auto& p : result.network.polylines)
+      loops += p.is_closed() ? 1 : 0;
+    const auto& s = result.network.scales;
+    const auto& t = result.timings;
+    std::cout << "points            " << points.size() << "\n"
+              << "candidates        " << result.candidates.indices.size() << "\n"
+              << "edge points       " << result.projected.edge_points.size() << "\n"
+              << "corner points     " << result.projected.corner_points.size() << "\n"
+              << "curves            " << result.network.polylines.size() << " (" << loops << " closed loops)\n"
+              << "corners           " << result.network.corners.size() << "\n"
+              << "scales            spacing " << s.spacing << ", noise " << s.noise << ", neighbours "
+              << s.candidate_neighbors << "/" << s.rmls_neighbors << ", threshold " << s.residual_threshold
+              << ", RMLS tolerance " << s.rmls_tolerance << ", corner radius " << s.corner_radius
+              << ", growth radius " << s.growth_radius << ", completion " << s.completion_distance << "\n"
+              << "time [s]          candidates " << t.candidates << ", projection " << t.projection
+              << ", smoothing " << t.smoothing << ", growing " << t.growing << ", completion " << t.completion
+              << ", total " << t.total() << "\n"
+              << "wrote             " << output << (ply.empty() ? "" : " and " + ply) << std::endl;
+  }
+  return 0;
+}

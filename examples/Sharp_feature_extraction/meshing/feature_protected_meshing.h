@@ -1,0 +1,183 @@
+// Surface meshing of an implicit function with Mesh_3, the feature curves protected.
+//
+// The domain is a Labeled_mesh_domain_3 over the implicit function (negative inside), wrapped
+// in Mesh_domain_with_polyline_features_3. With curves, Mesh_3 first covers every curve with
+// protecting balls, whose centres become mesh vertices joined by mesh edges along the curve;
+// the Delaunay refinement of the surface then cannot cut across a crease. Without curves the
+// very same domain, criteria and options run, so the two results compare one thing only.
+//
+// This header is the only one of the example that includes Mesh_3 (a heavy compilation).
+
+#ifndef SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+#define SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+
+#include "meshing/surface_mesh_checks.h"
+
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_domain_with_polyline_features_3.h>
+#include <CGAL/Mesh_error_code.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace sfe_meshing {
+
+/// Mesh_3 criteria, as absolute lengths (`Point_cloud_meshing_options` derives them from the
+/// sampling spacing).
+struct Mesh_sizes
+{
+  double edge_size = 0;      ///< largest protecting ball / mesh edge along a feature curve
+  double facet_size = 0;     ///< largest radius of a surface Delaunay ball
+  double facet_distance = 0; ///< largest distance from a facet to the surface
+  double facet_angle = 25;   ///< smallest facet angle, in degrees
+};
+
+struct Surface_meshing_limits
+{
+  double time_limit = 0;                  ///< seconds; 0: none
+  std::size_t maximal_number_of_vertices = 0; ///< 0: none
+  double relative_error_bound = 1e-6;     ///< of the surface intersections, relative to the bounding sphere
+  unsigned seed = 0;                      ///< of Mesh_3's random initial points
+};
+
+/// A closed surface as a triangle soup, facets oriented outward.
+template <typename Point_3>
+struct Triangle_soup_3
+{
+  std::vector<Point_3> points;
+  std::vector<Triangle_indices> triangles;
+};
+
+template <typename Point_3>
+struct Surface_meshing_result
+{
+  Triangle_soup_3<Point_3> surface;
+  std::size_t protected_vertices = 0; ///< vertices Mesh_3 put on the feature curves
+  bool stopped = false;               ///< the time or vertex limit was reached
+  std::string error;                  ///< empty on success
+};
+
+/// meshes the boundary of { x in `bound` : `function`(x) < 0 } with Mesh_3, protecting the
+/// polylines `features` (each a `std::vector<Point_3>`; closed ones repeat their first point,
+/// curves meet only at shared end points: see `repair_feature_curves_for_mesh_3()`).
+/// `heartbeat(seconds)` is called about 5 times per second while Mesh_3 runs.
+template <typename GeomTraits, typename Function>
+Surface_meshing_result<typename GeomTraits::Point_3>
+mesh_implicit_surface(const Function& function, const typename GeomTraits::Sphere_3& bound,
+                      const std::vector<std::vector<typename GeomTraits::Point_3>>& features,
+                      const Mesh_sizes& sizes, const Surface_meshing_limits& limits,
+                      const std::function<void(double)>& heartbeat = {})
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  typedef CGAL::Labeled_mesh_domain_3<GeomTraits> Implicit_domain;
+  typedef CGAL::Mesh_domain_with_polyline_features_3<Implicit_domain> Domain;
+  typedef typename CGAL::Mesh_triangulation_3<Domain>::type Tr;
+  typedef CGAL::Mesh_complex_3_in_triangulation_3<Tr, typename Domain::Corner_index,
+                                                  typename Domain::Curve_index> C3t3;
+  typedef CGAL::Mesh_criteria_3<Tr> Criteria;
+  namespace params = CGAL::parameters;
+
+  Surface_meshing_result<Point_3> result;
+  CGAL::Random random(limits.seed);
+  std::function<double(const Point_3&)> f = function;
+  Domain domain(Implicit_domain::create_implicit_mesh_domain(
+    f, bound, params::relative_error_bound = limits.relative_error_bound, params::p_rng = &random));
+  if(!features.empty())
+    domain.add_features(features.begin(), features.end());
+
+  Criteria criteria(params::edge_size = sizes.edge_size, params::facet_angle = sizes.facet_angle,
+                    params::facet_size = sizes.facet_size,
+                    params::facet_distance = sizes.facet_distance);
+
+  // a watchdog thread reports progress and enforces the time limit through Mesh_3's stop flag
+  std::atomic<bool> stop(false);
+  std::mutex mutex;
+  std::condition_variable done_signal;
+  bool done = false;
+  const auto start = std::chrono::steady_clock::now();
+  std::thread watchdog([&] {
+    std::unique_lock<std::mutex> lock(mutex);
+    while(!done_signal.wait_for(lock, std::chrono::milliseconds(200), [&] { return done; })) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if(heartbeat)
+        heartbeat(seconds);
+      if(limits.time_limit > 0 && seconds > limits.time_limit)
+        stop = true;
+    }
+  });
+
+  CGAL::Mesh_error_code error_code = CGAL::CGAL_MESH_3_NO_ERROR;
+  C3t3 c3t3;
+  try {
+    c3t3 = CGAL::make_mesh_3<C3t3>(
+      domain, criteria, params::no_perturb(), params::no_exude(), params::manifold(),
+      params::mesh_3_options(params::maximal_number_of_vertices = limits.maximal_number_of_vertices,
+                             params::pointer_to_error_code = &error_code,
+                             params::pointer_to_stop_atomic_boolean = &stop));
+  } catch(const std::exception& e) {
+    result.error = std::string("Mesh_3 failed: ") + e.what();
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    done = true;
+  }
+  done_signal.notify_all();
+  watchdog.join();
+  if(!result.error.empty())
+    return result;
+  if(error_code != CGAL::CGAL_MESH_3_NO_ERROR) {
+    result.stopped = true;
+    result.error = CGAL::mesh_error_string(error_code);
+  }
+
+  // the facets of the complex, each oriented away from the cell that is inside the domain
+  const Tr& tr = c3t3.triangulation();
+  std::map<typename Tr::Vertex_handle, std::size_t> index;
+  auto index_of = [&](typename Tr::Vertex_handle v) {
+    auto it = index.find(v);
+    if(it != index.end())
+      return it->second;
+    index[v] = result.surface.points.size();
+    result.surface.points.push_back(tr.geom_traits().construct_point_3_object()(v->point()));
+    return result.surface.points.size() - 1;
+  };
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    typename Tr::Cell_handle cell = f->first;
+    int i = f->second;
+    if(!c3t3.is_in_complex(cell)) {
+      const typename Tr::Facet mirror = tr.mirror_facet(*f);
+      cell = mirror.first;
+      i = mirror.second;
+    }
+    Triangle_indices t = {index_of(cell->vertex((i + 1) & 3)), index_of(cell->vertex((i + 2) & 3)),
+                          index_of(cell->vertex((i + 3) & 3))};
+    const Point_3 inside = tr.geom_traits().construct_point_3_object()(cell->vertex(i)->point());
+    const std::vector<Point_3>& p = result.surface.points;
+    if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
+      std::swap(t[1], t[2]);
+    result.surface.triangles.push_back(t);
+  }
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(v->in_dimension() == 0 || v->in_dimension() == 1)
+      ++result.protected_vertices;
+  if(result.surface.triangles.empty() && result.error.empty())
+    result.error = "Mesh_3 found no surface (is the implicit function negative inside the bounding sphere?)";
+  return result;
+}
+
+} // namespace sfe_meshing
+
+#endif // SFE_MESHING_FEATURE_PROTECTED_MESHING_H

@@ -1,0 +1,258 @@
+// Point cloud in, closed triangle mesh out, with or without the feature curves.
+//
+// The pipeline of `mesh_with_sharp_features`, kept in a header so that the test runs exactly
+// the same code:
+//   1. sampling spacing s of the cloud (it sets every size below);
+//   2. repair of the curves for Mesh_3 (feature_curve_repair.h);
+//   3. normals: jet estimation, MST orientation, then, near the curves, the normal of the
+//      point's own side of the crease (crease_model.h);
+//   4. Poisson implicit function from the oriented points, sharpened near the curves;
+//   5. Mesh_3 on that function, the curves protected (feature_protected_meshing.h).
+// Without curves (or with every use of them switched off) the steps are identical, so the
+// comparison isolates what the curves bring.
+
+#ifndef SFE_MESHING_POINT_CLOUD_MESHING_H
+#define SFE_MESHING_POINT_CLOUD_MESHING_H
+
+#include "meshing/crease_model.h"
+#include "meshing/feature_curve_repair.h"
+#include "meshing/feature_protected_meshing.h"
+
+#include <CGAL/Poisson_reconstruction_function.h>
+#include <CGAL/compute_average_spacing.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sfe_meshing {
+
+/// Options of `mesh_point_cloud()`. Sizes are multiples of the sampling spacing s unless the
+/// absolute override is set (> 0).
+struct Point_cloud_meshing_options
+{
+  /// Protect the curves in Mesh_3.
+  bool protect_curves = true;
+  /// Give points near a curve the normal of their own side.
+  bool correct_normals = true;
+  /// Replace the implicit function near the curves by the two-sided crease model.
+  bool sharpen_creases = true;
+
+  /// Mesh sizes relative to s (defaults measured on the benchmark: see meshing.md).
+  double facet_size = 3;
+  double facet_distance = 0.1;
+  double edge_size = 3;
+  double facet_angle = 25;
+  /// Absolute overrides (0: use the relative value).
+  double spacing = 0, absolute_facet_size = 0, absolute_facet_distance = 0, absolute_edge_size = 0;
+
+  /// Neighbours for jet normal estimation and MST orientation (CGAL's usual 18).
+  unsigned normal_neighbors = 18;
+  /// Curves are snapped and dropped at these multiples of s (feature_curve_repair.h).
+  double snap_tolerance = 1.5;
+  double minimum_curve_length = 3;
+
+  Surface_meshing_limits limits;
+};
+
+template <typename GeomTraits>
+struct Point_cloud_meshing_result
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  Triangle_soup_3<Point_3> surface;
+  std::string error; ///< empty on success
+  bool stopped = false;
+  double spacing = 0;
+  Mesh_sizes sizes;
+  Curve_repair_report repair;
+  std::vector<CGAL::Feature_polyline<GeomTraits>> curves; ///< the curves after the repair
+  std::vector<std::string> curve_problems; ///< what is still wrong after the repair
+  std::size_t protected_curves = 0, protected_vertices = 0;
+  std::size_t corrected_normals = 0, unoriented_points = 0;
+  double seconds_normals = 0, seconds_poisson = 0, seconds_meshing = 0;
+};
+
+/// Progress: the stage name and its completed fraction in [0, 1], or -1 when a stage cannot
+/// tell (then the second argument of the call is the elapsed time of the stage in seconds).
+typedef std::function<void(const std::string& stage, double fraction, double seconds)> Meshing_progress;
+
+namespace meshing_internal {
+
+inline double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// median over (a subset of) the points of |f(p + h n) - f(p - h n)| / 2h: the gradient norm
+/// of the Poisson function near the surface, to express it as a distance.
+template <typename Function, typename Point_with_normal>
+double gradient_norm(const Function& f, const std::vector<Point_with_normal>& pwn, double h)
+{
+  std::vector<double> g;
+  const std::size_t step = (std::max)(std::size_t(1), pwn.size() / 2000);
+  for(std::size_t i = 0; i < pwn.size(); i += step) {
+    const auto& p = pwn[i].first;
+    const auto& n = pwn[i].second;
+    g.push_back(std::abs(CGAL::to_double(f(p + h * n) - f(p - h * n))) / (2 * h));
+  }
+  if(g.empty())
+    return 1;
+  std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
+  return g[g.size() / 2] > 0 ? g[g.size() / 2] : 1;
+}
+
+} // namespace meshing_internal
+
+/// meshes the surface sampled by `points`, protecting `curves` (extracted feature curves,
+/// ideally with their two normals per vertex; they are repaired here) unless the options say
+/// otherwise. Never asserts on bad curves: what cannot be repaired is dropped and reported.
+template <typename GeomTraits, typename ConcurrencyTag = CGAL::Sequential_tag>
+Point_cloud_meshing_result<GeomTraits>
+mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
+                 std::vector<CGAL::Feature_polyline<GeomTraits>> curves,
+                 const Point_cloud_meshing_options& options, const Meshing_progress& progress = {},
+                 const std::vector<typename GeomTraits::Point_3>& corner_hints = {})
+{
+  typedef typename GeomTraits::Point_3 Point_3;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  typedef std::pair<Point_3, Vector_3> Point_with_normal;
+  typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+  typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+  using meshing_internal::seconds_since;
+
+  auto report = [&](const std::string& stage, double fraction, double seconds) {
+    if(progress)
+      progress(stage, fraction, seconds);
+  };
+
+  Point_cloud_meshing_result<GeomTraits> result;
+  if(points.size() < 100) {
+    result.error = "too few points to mesh (" + std::to_string(points.size()) + ")";
+    return result;
+  }
+
+  // 1. the scale of everything
+  auto start = std::chrono::steady_clock::now();
+  report("normals", 0, 0);
+  const double s = options.spacing > 0 ? options.spacing
+                   : CGAL::to_double(CGAL::compute_average_spacing<ConcurrencyTag>(points, 6));
+  result.spacing = s;
+  if(!(s > 0) || !std::isfinite(s)) {
+    result.error = "cannot compute the sampling spacing (duplicate points only?)";
+    return result;
+  }
+  auto pick = [s](double absolute, double relative) { return absolute > 0 ? absolute : relative * s; };
+  result.sizes.facet_size = pick(options.absolute_facet_size, options.facet_size);
+  result.sizes.facet_distance = pick(options.absolute_facet_distance, options.facet_distance);
+  result.sizes.edge_size = pick(options.absolute_edge_size, options.edge_size);
+  result.sizes.facet_angle = options.facet_angle;
+
+  // 2. curves Mesh_3 accepts
+  const bool use_curves = options.protect_curves || options.correct_normals || options.sharpen_creases;
+  if(!use_curves)
+    curves.clear();
+  Curve_repair_options repair_options;
+  repair_options.snap_tolerance = options.snap_tolerance * s;
+  repair_options.minimum_length = options.minimum_curve_length * s;
+  result.repair = repair_feature_curves_for_mesh_3(curves, repair_options, corner_hints);
+  result.curve_problems = find_mesh_3_feature_problems(curves, repair_options.snap_tolerance);
+
+  // 3. oriented normals, corrected near the creases
+  std::vector<Point_with_normal> pwn;
+  pwn.reserve(points.size());
+  for(const Point_3& p : points)
+    pwn.push_back(Point_with_normal(p, CGAL::NULL_VECTOR));
+  CGAL::jet_estimate_normals<ConcurrencyTag>(
+    pwn, options.normal_neighbors,
+    CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()).callback([&](double f) {
+      report("normals", 0.5 * f, seconds_since(start));
+      return true;
+    }));
+  report("normals", 0.5, seconds_since(start));
+  auto unoriented = CGAL::mst_orient_normals(pwn, options.normal_neighbors,
+                                             CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  result.unoriented_points = static_cast<std::size_t>(std::distance(unoriented, pwn.end()));
+  pwn.erase(unoriented, pwn.end());
+  report("normals", 0.8, seconds_since(start));
+
+  const Crease_model_options model_options = Crease_model_options::for_spacing(s);
+  Crease_model<GeomTraits> creases(options.correct_normals || options.sharpen_creases
+                                     ? curves : std::vector<CGAL::Feature_polyline<GeomTraits>>(),
+                                   points, model_options);
+  if(options.correct_normals) {
+    for(Point_with_normal& p : pwn) {
+      Vector_3 n;
+      if(!creases.side_normal(p.first, n))
+        continue;
+      // the jet normal is the average of the two sides: it tells the orientation
+      p.second = (n * p.second < 0) ? -n : n;
+      ++result.corrected_normals;
+    }
+  }
+  {
+    std::vector<Point_3> oriented_points;
+    std::vector<Vector_3> oriented_normals;
+    for(const Point_with_normal& p : pwn) {
+      oriented_points.push_back(p.first);
+      oriented_normals.push_back(p.second);
+    }
+    creases.orient(oriented_points, oriented_normals);
+  }
+  result.seconds_normals = seconds_since(start);
+  report("normals", 1, result.seconds_normals);
+
+  // 4. the implicit surface
+  start = std::chrono::steady_clock::now();
+  report("poisson", -1, 0);
+  CGAL::Poisson_reconstruction_function<GeomTraits> poisson(pwn.begin(), pwn.end(), Point_map(), Normal_map());
+  if(!poisson.compute_implicit_function()) {
+    result.error = "Poisson reconstruction failed (the linear solver did not converge)";
+    return result;
+  }
+  Crease_sharpened_function<GeomTraits, CGAL::Poisson_reconstruction_function<GeomTraits>> function;
+  function.base = &poisson;
+  function.creases = options.sharpen_creases ? &creases : nullptr;
+  function.base_scale = 1. / meshing_internal::gradient_norm(poisson, pwn, s);
+  result.seconds_poisson = seconds_since(start);
+  report("poisson", 1, result.seconds_poisson);
+
+  // 5. the mesh
+  start = std::chrono::steady_clock::now();
+  report("meshing", -1, 0);
+  CGAL::Bbox_3 box;
+  for(const Point_3& p : points)
+    box += p.bbox();
+  const Point_3 center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                       (box.zmin() + box.zmax()) / 2);
+  const double half_diagonal = 0.5 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                               CGAL::square(box.ymax() - box.ymin()) +
+                                               CGAL::square(box.zmax() - box.zmin()));
+  const double radius = 1.1 * half_diagonal + 5 * s;
+  std::vector<std::vector<Point_3>> features;
+  if(options.protect_curves)
+    for(const auto& c : curves)
+      features.push_back(c.points);
+  result.protected_curves = features.size();
+  Surface_meshing_result<Point_3> mesh = mesh_implicit_surface<GeomTraits>(
+    function, typename GeomTraits::Sphere_3(center, radius * radius), features, result.sizes,
+    options.limits, [&](double seconds) { report("meshing", -1, seconds); });
+  result.seconds_meshing = seconds_since(start);
+  report("meshing", 1, result.seconds_meshing);
+  result.surface = std::move(mesh.surface);
+  result.curves = std::move(curves);
+  result.protected_vertices = mesh.protected_vertices;
+  result.stopped = mesh.stopped;
+  result.error = mesh.error;
+  return result;
+}
+
+} // namespace sfe_meshing
+
+#endif // SFE_MESHING_POINT_CLOUD_MESHING_H

@@ -1,0 +1,166 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Result types of the sharp feature extraction pipeline: what every stage returns.
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_SHARP_FEATURES_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_SHARP_FEATURES_H
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// The scales that drive every stage. Each one is derived from the data by
+/// `compute_candidate_points()` unless the user overrides it with a named parameter;
+/// the values actually used are reported here so that a run can be reproduced.
+template <typename FT>
+struct Sharp_feature_scales
+{
+  /// Average sampling spacing: mean distance to the 6th nearest neighbour.
+  FT spacing = 0;
+  /// Noise scale: median over all points of the RMS residual of their stage-1 jet fits.
+  FT noise = 0;
+  /// Number of points in a stage-1 (candidate) neighbourhood.
+  std::size_t candidate_neighbors = 0;
+  /// Number of points in a stage-2 (RMLS) neighbourhood.
+  std::size_t rmls_neighbors = 0;
+  /// Candidate threshold tau on the stage-1 residual (a distance).
+  FT residual_threshold = 0;
+  /// RMLS tolerance: largest residual (a distance) of a point that belongs to a smooth surface.
+  FT rmls_tolerance = 0;
+  /// Radius within which corner points are grouped into one corner (stage 2).
+  FT corner_radius = 0;
+  /// Neighbourhood radius used to grow polylines (stage 4).
+  FT growth_radius = 0;
+  /// Largest gap that completion bridges (stage 5).
+  FT completion_distance = 0;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Output of stage 1 (`compute_candidate_points()`).
+template <typename GeomTraits>
+struct Candidate_points
+{
+  typedef typename GeomTraits::FT FT;
+  /// Residual r(p) of every input point, in input order: the largest distance, along the
+  /// fit normal, from a neighbour of p to the jet fitted to p's neighbourhood.
+  std::vector<FT> residuals;
+  /// Indices (into the input range) of the points whose residual exceeds the threshold.
+  std::vector<std::size_t> indices;
+  /// The scales derived from the data (or given by the user), used by every later stage.
+  Sharp_feature_scales<FT> scales;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// A point on the intersection of two smooth surfaces, with the normals of both.
+/// The normals are unit vectors, each oriented away from the other surface: outward on a
+/// convex crease, inward on a concave one.
+template <typename GeomTraits>
+struct Edge_point
+{
+  typename GeomTraits::Point_3 point;
+  std::array<typename GeomTraits::Vector_3, 2> normals;
+  /// Index of the input point this edge point was projected from.
+  std::size_t source = 0;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// A point where three (or more) smooth surfaces meet, with the normals of the three.
+template <typename GeomTraits>
+struct Corner_point
+{
+  typename GeomTraits::Point_3 point;
+  std::array<typename GeomTraits::Vector_3, 3> normals;
+  /// Confidence 1/|c - e|, where e is the edge projection of the same candidate.
+  typename GeomTraits::FT weight = 0;
+  /// Index of the input point this corner point was projected from.
+  std::size_t source = 0;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Output of stages 2 and 3: the feature point cloud F = E u C.
+template <typename GeomTraits>
+struct Feature_point_set
+{
+  std::vector<Edge_point<GeomTraits>> edge_points;
+  std::vector<Corner_point<GeomTraits>> corner_points;
+  /// The scales the stages were run with.
+  Sharp_feature_scales<typename GeomTraits::FT> scales;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// A feature curve. An open curve runs from `points.front()` to `points.back()`; a closed one
+/// repeats its first point exactly at the end. `normals[i]` are the normals of the two surfaces
+/// meeting at `points[i]`, in the same order and orientation along the whole curve.
+template <typename GeomTraits>
+struct Feature_polyline
+{
+  static constexpr std::size_t no_corner = (std::numeric_limits<std::size_t>::max)();
+
+  std::vector<typename GeomTraits::Point_3> points;
+  std::vector<std::array<typename GeomTraits::Vector_3, 2>> normals;
+  /// Index (into `Feature_curve_network::corners`) of the corner the curve starts at, or `no_corner`.
+  std::size_t front_corner = no_corner;
+  /// Index of the corner the curve ends at, or `no_corner`.
+  std::size_t back_corner = no_corner;
+
+  bool is_closed() const { return points.size() > 2 && points.front() == points.back(); }
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// A corner of the curve network: its point is shared exactly by every incident curve.
+template <typename GeomTraits>
+struct Feature_corner
+{
+  typename GeomTraits::Point_3 point;
+  /// Normals of the surfaces meeting at the corner (three when it came from a corner point,
+  /// otherwise gathered from the incident curves).
+  std::vector<typename GeomTraits::Vector_3> normals;
+  /// Indices (into `Feature_curve_network::polylines`) of the curves that start or end here.
+  std::vector<std::size_t> incident_polylines;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Output of stages 4 and 5: polylines and the corners where they meet.
+template <typename GeomTraits>
+struct Feature_curve_network
+{
+  std::vector<Feature_polyline<GeomTraits>> polylines;
+  std::vector<Feature_corner<GeomTraits>> corners;
+  Sharp_feature_scales<typename GeomTraits::FT> scales;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Wall-clock time of each stage, in seconds.
+struct Sharp_feature_timings
+{
+  double candidates = 0, projection = 0, smoothing = 0, growing = 0, completion = 0;
+  double total() const { return candidates + projection + smoothing + growing + completion; }
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Everything `extract_sharp_features()` computes: the final curves and every intermediate
+/// point set, for inspection.
+template <typename GeomTraits>
+struct Sharp_features
+{
+  /// Final curves and corners (after completion).
+  Feature_curve_network<GeomTraits> network;
+  /// Stage 1: candidate points and residuals.
+  Candidate_points<GeomTraits> candidates;
+  /// Stage 2: RMLS-projected edge and corner points.
+  Feature_point_set<GeomTraits> projected;
+  /// Stage 3: smoothed feature points.
+  Feature_point_set<GeomTraits> smoothed;
+  /// Stage 4: polylines before completion.
+  Feature_curve_network<GeomTraits> grown;
+  Sharp_feature_timings timings;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_SHARP_FEATURES_H

@@ -1,0 +1,54 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_COMPLETE_FEATURE_POLYLINES_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_COMPLETE_FEATURE_POLYLINES_H
+
+#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/internal/completion_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Stage 5: completes the curve network in place (paper, section 3.5, end-point analysis).
+///
+/// Free-ended polylines shorter than twice the growth radius are removed as noise. At each free
+/// end, the outward tangent (principal direction of the last 4 vertices) defines a search cone of
+/// half-angle `maximum_angle`, up to the completion distance; the closest polyline vertex or
+/// corner inside it decides: (a) another end facing back: the gap is bridged (or a loop closed);
+/// (b) an interior vertex: that polyline is split there and a corner is created; an end at an
+/// angle or an existing corner: the ends meet at a corner; (c) nothing: a dissipating feature end
+/// is left as it is. Corners with fewer than two curves are removed; a corner between two curves
+/// that continue each other is merged through. A curve turning by more than 60 degrees at a vertex
+/// is split there (Mesh_3 would round such a turn off). Finally 1-2 passes of Laplacian smoothing
+/// with inverse-distance weights move interior vertices, ends fixed.
+///
+/// Guarantees: curves that meet at a corner share the exact corner point; closed loops repeat
+/// their first point exactly; normals are consistent in order and orientation along each curve.
+///
+/// \param network the output of `grow_feature_polylines()`, completed in place.
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{maximum_angle} half-angle, in degrees, of the search cone; default: 30. \cgalParamNEnd
+///   \cgalParamNBegin{number_of_relaxation_steps} Laplacian passes; default: 2. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance} largest gap
+///     bridged; default: `network.scales.completion_distance`. \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
+void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
+                                const NamedParameters& np = parameters::default_values())
+{
+  namespace sfe = Sharp_feature_extraction::internal;
+  const sfe::Settings settings = sfe::read_settings(np);
+  sfe::Scales scales = sfe::to_internal(network.scales);
+  if(settings.completion_distance > 0)
+    scales.completion_distance = settings.completion_distance;
+  sfe::Curve_network internal_network = sfe::to_internal(network);
+  sfe::complete_polylines(internal_network, scales, settings);
+  network = sfe::to_public<GeomTraits>(internal_network, scales);
+}
+
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,165 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_HEIGHT_FIELD_FIT_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_HEIGHT_FIELD_FIT_H
+
+#include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+
+/// An orthonormal frame: `n` is the normal of the reference plane through `origin`.
+struct Local_frame
+{
+  Vec3 origin = Vec3::Zero(), u = Vec3::UnitX(), v = Vec3::UnitY(), n = Vec3::UnitZ();
+};
+
+/// Principal component frame of `points[indices]`: n along the smallest eigenvalue.
+/// `spread` receives the eigenvalues (ascending) of the covariance divided by the count.
+/// Returns false for fewer than 3 points.
+template <typename IndexRange>
+bool principal_frame(const std::vector<Vec3>& points, const IndexRange& indices,
+                     Local_frame& frame, Vec3& spread)
+{
+  std::size_t count = 0;
+  Vec3 centroid = Vec3::Zero();
+  for(std::size_t i : indices) { centroid += points[i]; ++count; }
+  if(count < 3)
+    return false;
+  centroid /= double(count);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(std::size_t i : indices)
+  {
+    const Vec3 d = points[i] - centroid;
+    covariance.noalias() += d * d.transpose();
+  }
+  covariance /= double(count);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  frame.origin = centroid;
+  frame.n = solver.eigenvectors().col(0).normalized();
+  frame.u = solver.eigenvectors().col(2).normalized();
+  frame.v = frame.n.cross(frame.u).normalized();
+  spread = solver.eigenvalues().cwiseMax(0.);
+  return true;
+}
+
+/// A polynomial height field z = f(x, y) of degree 1 or 2 over a local frame: the jet of
+/// Monge_via_jet_fitting restricted to what the pipeline needs (residuals, feet, normals),
+/// solved in fixed-size storage so that the fits inside the forward search never allocate.
+class Height_field
+{
+public:
+  Local_frame frame;
+  /// x and y are divided by `scale` before evaluation, to keep the normal equations conditioned.
+  double scale = 1;
+  /// Coefficients of 1, X, Y, X^2, XY, Y^2 with X = x/scale, Y = y/scale.
+  Eigen::Matrix<double, 6, 1> coefficients = Eigen::Matrix<double, 6, 1>::Zero();
+
+  /// Signed distance from `q` to the graph, measured along the frame normal.
+  double height(const Vec3& q) const
+  {
+    const Vec3 d = q - frame.origin;
+    return d.dot(frame.n) - value(d.dot(frame.u) / scale, d.dot(frame.v) / scale);
+  }
+
+  double residual(const Vec3& q) const { return std::abs(height(q)); }
+
+  /// The point of the graph above or below `q` (projection along the frame normal).
+  Vec3 foot(const Vec3& q) const
+  {
+    const Vec3 d = q - frame.origin;
+    const double x = d.dot(frame.u), y = d.dot(frame.v);
+    return frame.origin + x * frame.u + y * frame.v + value(x / scale, y / scale) * frame.n;
+  }
+
+  /// Unit normal of the graph at the foot of `q`, on the side of the frame normal.
+  Vec3 normal(const Vec3& q) const
+  {
+    const Vec3 d = q - frame.origin;
+    const double X = d.dot(frame.u) / scale, Y = d.dot(frame.v) / scale;
+    const Eigen::Matrix<double, 6, 1>& c = coefficients;
+    const double fx = (c[1] + 2 * c[3] * X + c[4] * Y) / scale;
+    const double fy = (c[2] + c[4] * X + 2 * c[5] * Y) / scale;
+    return (frame.n - fx * frame.u - fy * frame.v).normalized();
+  }
+
+  /// Least-squares fit of degree `degree` (1 or 2) to `points[indices]` over `reference`.
+  /// Falls back to degree 1 when there are too few points for a quadric. Returns false
+  /// when there are fewer than 3 points.
+  template <typename IndexRange>
+  bool fit(const std::vector<Vec3>& points, const IndexRange& indices, const Local_frame& reference,
+           int degree)
+  {
+    frame = reference;
+    std::size_t count = 0;
+    double extent = 0;
+    for(std::size_t i : indices)
+    {
+      const Vec3 d = points[i] - frame.origin;
+      extent = (std::max)(extent, d.dot(frame.u) * d.dot(frame.u) + d.dot(frame.v) * d.dot(frame.v));
+      ++count;
+    }
+    if(count < 3)
+      return false;
+    scale = extent > 0 ? std::sqrt(extent) : 1.;
+    const int unknowns = (degree >= 2 && count >= minimum_points_for_quadric) ? 6 : 3;
+
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+    Eigen::Matrix<double, 6, 1> row;
+    for(std::size_t i : indices)
+    {
+      const Vec3 d = points[i] - frame.origin;
+      const double X = d.dot(frame.u) / scale, Y = d.dot(frame.v) / scale;
+      row << 1, X, Y, X * X, X * Y, Y * Y;
+      normal_matrix.noalias() += row * row.transpose();
+      rhs.noalias() += row * d.dot(frame.n);
+    }
+    // Ridge term relative to the matrix size: keeps nearly collinear neighbourhoods solvable,
+    // and is negligible (1e-9 of the unit-scaled moments) on well spread ones.
+    const double ridge = 1e-9 * double(count);
+    coefficients.setZero();
+    if(unknowns == 6)
+    {
+      normal_matrix.diagonal().array() += ridge;
+      coefficients = normal_matrix.ldlt().solve(rhs);
+    }
+    else
+    {
+      Eigen::Matrix3d m = normal_matrix.topLeftCorner<3, 3>();
+      m.diagonal().array() += ridge;
+      coefficients.head<3>() = m.ldlt().solve(rhs.head<3>());
+    }
+    if(!coefficients.allFinite())
+    {
+      coefficients.setZero();
+      return false;
+    }
+    return true;
+  }
+
+  static constexpr std::size_t minimum_points_for_quadric = 10;
+
+private:
+  double value(double X, double Y) const
+  {
+    const Eigen::Matrix<double, 6, 1>& c = coefficients;
+    return c[0] + c[1] * X + c[2] * Y + c[3] * X * X + c[4] * X * Y + c[5] * Y * Y;
+  }
+};
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,175 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 1 (paper 3.2): jet-fit residuals, the candidate threshold, and the data-derived scales.
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
+
+#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
+#include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+
+/// Fewer input points than this cannot define a feature: the result is empty.
+constexpr std::size_t minimum_number_of_points = 20;
+/// Neighbourhood size of a stage-1 fit on noise-free data (the 2006 code's value).
+constexpr std::size_t base_candidate_neighbors = 36;
+/// Upper bound of the noise-grown stage-1 neighbourhood.
+constexpr std::size_t maximum_candidate_neighbors = 400;
+/// Noise-to-spacing ratio above which neighbourhoods grow (quadratically with the ratio).
+constexpr double noise_ratio_for_growth = 0.25;
+/// RMLS tolerance relative to the noise scale (the RMS residual underestimates the noise a little:
+/// 2.25 of it covers uniform noise in a ball, whose normal component reaches 2.2 of its RMS).
+constexpr double rmls_tolerance_per_noise = 2.25;
+/// Smallest RMLS tolerance, relative to the spacing, for noise-free data.
+constexpr double rmls_tolerance_per_spacing = 0.05;
+/// Spacing is the mean distance to this neighbour (CGAL's compute_average_spacing convention).
+constexpr std::size_t spacing_neighbor = 6;
+/// At most this many points are used to estimate spacing, noise and neighbourhood radii.
+constexpr std::size_t scale_sample_size = 20000;
+
+struct Candidate_output
+{
+  std::vector<double> residuals;
+  std::vector<std::size_t> candidates;
+  Scales scales;
+};
+
+struct Local_fit_statistics
+{
+  double max_residual = 0;
+  double rms_residual = 0;
+};
+
+/// Jet fit of `points[neighbors]` over its principal plane: the paper's residual r(p) (largest
+/// distance to the fit along the plane normal) and the RMS residual.
+template <typename IndexRange>
+Local_fit_statistics fit_residuals(const std::vector<Vec3>& points, const IndexRange& neighbors, int degree)
+{
+  Local_fit_statistics stats;
+  Local_frame frame;
+  Vec3 spread;
+  if(!principal_frame(points, neighbors, frame, spread))
+    return stats;
+  Height_field fit;
+  if(!fit.fit(points, neighbors, frame, degree))
+    return stats;
+  double sum = 0;
+  std::size_t count = 0;
+  for(std::size_t j : neighbors)
+  {
+    const double r = fit.residual(points[j]);
+    stats.max_residual = (std::max)(stats.max_residual, r);
+    sum += r * r;
+    ++count;
+  }
+  stats.rms_residual = std::sqrt(sum / double(count));
+  return stats;
+}
+
+inline double median(std::vector<double> values)
+{
+  if(values.empty())
+    return 0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+/// Spacing, noise and neighbourhood sizes from a regular subsample of the cloud, then the
+/// user's overrides. Returns false when the cloud has no extent (all points identical).
+inline bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
+                          const Settings& settings, Scales& scales)
+{
+  const std::size_t n = points.size();
+  const std::size_t stride = (std::max<std::size_t>)(1, n / scale_sample_size);
+  const std::size_t k0 = (std::min)(base_candidate_neighbors, n);
+  std::vector<double> spacing, rms;
+  std::vector<std::size_t> neighbors;
+  for(std::size_t i = 0; i < n; i += stride)
+  {
+    index.nearest(points[i], k0, neighbors);
+    spacing.push_back((points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - points[i]).norm());
+    rms.push_back(fit_residuals(points, neighbors, settings.degree_fitting).rms_residual);
+  }
+  scales.spacing = std::accumulate(spacing.begin(), spacing.end(), 0.) / double(spacing.size());
+  if(!(scales.spacing > 0))
+    return false;
+  scales.noise = median(rms);
+
+  const double noise_ratio = scales.noise / scales.spacing;
+  const double growth = (std::max)(1., std::pow(noise_ratio / noise_ratio_for_growth, 2));
+  scales.candidate_neighbors = settings.candidate_neighbors > 0
+    ? settings.candidate_neighbors
+    : (std::min)(maximum_candidate_neighbors, std::size_t(double(base_candidate_neighbors) * growth));
+  scales.candidate_neighbors = (std::max<std::size_t>)(7, (std::min)(scales.candidate_neighbors, n));
+  scales.rmls_neighbors = settings.rmls_neighbors > 0 ? settings.rmls_neighbors : 2 * scales.candidate_neighbors;
+  scales.rmls_neighbors = (std::max<std::size_t>)(7, (std::min)(scales.rmls_neighbors, n));
+
+  // Neighbourhood radii: the median distance to the k-th neighbour.
+  std::vector<double> r1, r2;
+  for(std::size_t i = 0; i < n; i += stride)
+  {
+    index.nearest(points[i], scales.rmls_neighbors, neighbors);
+    r1.push_back((points[neighbors[(std::min)(scales.candidate_neighbors, neighbors.size()) - 1]] - points[i]).norm());
+    r2.push_back((points[neighbors.back()] - points[i]).norm());
+  }
+  // The RMLS tolerance must admit the noise but never fall to 0 on exact data.
+  scales.rmls_tolerance = settings.rmls_tolerance > 0
+    ? settings.rmls_tolerance
+    : (std::max)(rmls_tolerance_per_noise * scales.noise, rmls_tolerance_per_spacing * scales.spacing);
+  scales.corner_radius = settings.corner_radius > 0 ? settings.corner_radius : median(r2);
+  scales.growth_radius = settings.growth_radius > 0 ? settings.growth_radius : median(r1);
+  scales.completion_distance = settings.completion_distance > 0
+    ? settings.completion_distance : (std::max)(7 * scales.spacing, 3 * scales.growth_radius);
+  return true;
+}
+
+/// Stage 1 on every point. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool compute_candidates(const std::vector<Vec3>& points, const Point_index& index,
+                        const Settings& settings, Progress progress, Candidate_output& out)
+{
+  const std::size_t n = points.size();
+  out = Candidate_output();
+  out.residuals.assign(n, 0.);
+  if(n < minimum_number_of_points || !derive_scales(points, index, settings, out.scales))
+    return progress.report(1.);
+
+  const std::size_t k = out.scales.candidate_neighbors;
+  const int degree = settings.degree_fitting;
+  std::vector<double>& residuals = out.residuals;
+  if(!parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> neighbors;
+       for(std::size_t i = first; i < last; ++i)
+       {
+         index.nearest(points[i], k, neighbors);
+         residuals[i] = fit_residuals(points, neighbors, degree).max_residual;
+       }
+     }))
+    return false;
+
+  out.scales.residual_threshold = settings.residual_threshold >= 0
+    ? settings.residual_threshold
+    : std::accumulate(residuals.begin(), residuals.end(), 0.) / double(n);
+  for(std::size_t i = 0; i < n; ++i)
+    if(residuals[i] > out.scales.residual_threshold)
+      out.candidates.push_back(i);
+  return true;
+}
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,484 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 5 (paper 3.5, end-point analysis): gaps are bridged, missed corners created, loose ends
+// attached to corners or left as dissipating features; then light Laplacian smoothing and the
+// guarantees Mesh_3 needs (shared corner points, exactly closed loops, sharp turns split).
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_COMPLETION_IMPL_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_COMPLETION_IMPL_H
+
+#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+
+struct Completion_constants
+{
+  /// Vertices used to estimate the tangent at an end.
+  static constexpr std::size_t tangent_vertices = 4;
+  /// A curve turning by more than this angle (degrees) at a vertex is split there.
+  static constexpr double sharp_turn_angle = 60;
+  /// Laplacian step: the fraction of the way to the weighted average of the two neighbours.
+  static constexpr double laplacian_step = 0.5;
+  /// Free-ended curves shorter than this, relative to the growth radius, are noise.
+  static constexpr double min_length = 2;
+  /// Passes over all ends; each pass stops at the first change.
+  static constexpr std::size_t max_rounds = 10000;
+};
+
+inline double curve_length(const Curve& c)
+{
+  double length = 0;
+  for(std::size_t i = 1; i < c.points.size(); ++i)
+    length += (c.points[i] - c.points[i - 1]).norm();
+  return length;
+}
+
+/// Outward unit tangent at the front (`back == false`) or back end of an open curve.
+inline Vec3 end_tangent(const Curve& c, bool back)
+{
+  const std::size_t n = c.points.size();
+  const std::size_t m = (std::min)(Completion_constants::tangent_vertices, n);
+  auto at = [&](std::size_t k) -> const Vec3& { return back ? c.points[n - 1 - k] : c.points[k]; };
+  Vec3 centroid = Vec3::Zero();
+  for(std::size_t k = 0; k < m; ++k)
+    centroid += at(k);
+  centroid /= double(m);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(std::size_t k = 0; k < m; ++k)
+    covariance.noalias() += (at(k) - centroid) * (at(k) - centroid).transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  Vec3 t = solver.eigenvectors().col(2).normalized();
+  if(!t.allFinite())
+    t = (at(0) - at(m - 1)).normalized();
+  return t.dot(at(0) - at(m - 1)) >= 0 ? t : Vec3(-t);
+}
+
+inline void reverse_curve(Curve& c)
+{
+  std::reverse(c.points.begin(), c.points.end());
+  std::reverse(c.normals.begin(), c.normals.end());
+  std::swap(c.front_corner, c.back_corner);
+}
+
+/// `a` followed by `b` (which must start where the joining segment ends).
+inline void append_curve(Curve& a, const Curve& b)
+{
+  a.points.insert(a.points.end(), b.points.begin(), b.points.end());
+  a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
+  a.back_corner = b.back_corner;
+}
+
+class Curve_completion
+{
+  typedef Completion_constants C;
+
+public:
+  Curve_completion(Curve_network& network, const Scales& scales, const Settings& settings)
+    : m_net(network), m_scales(scales), m_settings(settings),
+      m_cos_aperture(std::cos(radians(settings.completion_aperture)))
+  {}
+
+  void run()
+  {
+    drop_short_free_curves();
+    // End analysis, one change at a time: every change renumbers curves and vertices.
+    std::vector<std::pair<std::size_t, bool>> dissipating;
+    for(std::size_t round = 0; round < C::max_rounds; ++round)
+    {
+      bool changed = false;
+      for(std::size_t c = 0; c < m_net.curves.size() && !changed; ++c)
+        for(bool back : {false, true})
+        {
+          if(!is_free_end(c, back)
+             || std::find(dissipating.begin(), dissipating.end(), std::make_pair(c, back)) != dissipating.end())
+            continue;
+          if(resolve_end(c, back))
+          {
+            changed = true;
+            dissipating.clear();
+            break;
+          }
+          dissipating.emplace_back(c, back);
+        }
+      if(!changed)
+        break;
+    }
+    clean_corners();
+    split_sharp_turns();
+    for(unsigned int pass = 0; pass < m_settings.laplacian_passes; ++pass)
+      for(Curve& c : m_net.curves)
+        laplacian_pass(c);
+    finalize();
+  }
+
+private:
+  Curve_network& m_net;
+  const Scales& m_scales;
+  const Settings& m_settings;
+  double m_cos_aperture;
+
+  bool is_free_end(std::size_t c, bool back) const
+  {
+    const Curve& curve = m_net.curves[c];
+    return !curve.closed && (back ? curve.back_corner : curve.front_corner) == no_index;
+  }
+
+  void drop_short_free_curves()
+  {
+    std::vector<Curve> kept;
+    for(Curve& c : m_net.curves)
+      if(c.closed || c.front_corner != no_index || c.back_corner != no_index
+         || curve_length(c) >= C::min_length * m_scales.growth_radius)
+        kept.push_back(std::move(c));
+    m_net.curves.swap(kept);
+  }
+
+  struct Target
+  {
+    std::size_t curve = no_index, vertex = no_index, corner = no_index;
+    double distance = std::numeric_limits<double>::infinity();
+  };
+
+  // The closest curve vertex or corner inside the search cone of an end (paper Fig. 8).
+  Target find_target(std::size_t c, bool back, const Vec3& end, const Vec3& tangent) const
+  {
+    Target best;
+    const double reach = m_scales.completion_distance;
+    auto in_cone = [&](const Vec3& q, double& d) {
+      const Vec3 v = q - end;
+      d = v.norm();
+      return d > 0 && d <= reach && v.dot(tangent) >= m_cos_aperture * d;
+    };
+    for(std::size_t k = 0; k < m_net.corners.size(); ++k)
+    {
+      double d;
+      if(in_cone(m_net.corners[k].point, d) && d < best.distance)
+        best = Target{no_index, no_index, k, d};
+    }
+    const double own_reach = m_scales.completion_distance;
+    for(std::size_t d_index = 0; d_index < m_net.curves.size(); ++d_index)
+    {
+      const Curve& other = m_net.curves[d_index];
+      const std::size_t n = other.points.size();
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        if(d_index == c)
+        {
+          // On its own curve, an end only sees the other end, or vertices far along the curve.
+          const std::size_t from_end = back ? n - 1 - v : v;
+          const bool other_end = from_end == n - 1;
+          if(!other_end && arc_length_from_end(other, back, from_end) < 2 * own_reach)
+            continue;
+        }
+        double d;
+        if(in_cone(other.points[v], d) && d < best.distance)
+          best = Target{d_index, v, no_index, d};
+      }
+    }
+    return best;
+  }
+
+  static double arc_length_from_end(const Curve& c, bool back, std::size_t steps)
+  {
+    double length = 0;
+    const std::size_t n = c.points.size();
+    for(std::size_t k = 0; k < steps; ++k)
+    {
+      const std::size_t a = back ? n - 1 - k : k, b = back ? n - 2 - k : k + 1;
+      length += (c.points[a] - c.points[b]).norm();
+    }
+    return length;
+  }
+
+  std::size_t add_corner(const Vec3& point, const std::array<Vec3, 2>& normals)
+  {
+    m_net.corners.push_back(Corner_node{point, {normals[0], normals[1]}});
+    return m_net.corners.size() - 1;
+  }
+
+  void attach_to_corner(std::size_t c, bool back, std::size_t corner)
+  {
+    Curve& curve = m_net.curves[c];
+    const Vec3 point = m_net.corners[corner].point;
+    if(back)
+    {
+      curve.points.push_back(point);
+      curve.normals.push_back(curve.normals.back());
+      curve.back_corner = corner;
+    }
+    else
+    {
+      curve.points.insert(curve.points.begin(), point);
+      curve.normals.insert(curve.normals.begin(), curve.normals.front());
+      curve.front_corner = corner;
+    }
+  }
+
+  // Resolves one free end; returns true if the network changed.
+  bool resolve_end(std::size_t c, bool back)
+  {
+    Curve& curve = m_net.curves[c];
+    const Vec3 end = back ? curve.points.back() : curve.points.front();
+    const Vec3 tangent = end_tangent(curve, back);
+    const Target target = find_target(c, back, end, tangent);
+    if(target.distance == std::numeric_limits<double>::infinity())
+      return false; // (c) a dissipating feature end
+    if(target.corner != no_index)
+    {
+      attach_to_corner(c, back, target.corner);
+      return true;
+    }
+    Curve& other = m_net.curves[target.curve];
+    const std::size_t n = other.points.size();
+    const bool at_end = !other.closed && (target.vertex == 0 || target.vertex == n - 1);
+    if(at_end)
+    {
+      const bool other_back = target.vertex == n - 1;
+      if(!is_free_end(target.curve, other_back))
+      {
+        attach_to_corner(c, back, other_back ? other.back_corner : other.front_corner);
+        return true;
+      }
+      const Vec3 other_tangent = end_tangent(other, other_back);
+      if(other_tangent.dot(tangent) <= -m_cos_aperture)
+      {
+        // (a) a gap between two ends that face each other
+        if(target.curve == c)
+        {
+          curve.points.push_back(curve.points.front());
+          curve.normals.push_back(curve.normals.front());
+          curve.closed = true;
+        }
+        else
+          merge_ends(c, back, target.curve, other_back);
+        return true;
+      }
+      // Two ends meeting at an angle: a corner the growing missed.
+      const std::size_t corner = add_corner(other.points[target.vertex], other.normals[target.vertex]);
+      (other_back ? other.back_corner : other.front_corner) = corner;
+      attach_to_corner(c, back, corner);
+      return true;
+    }
+    // (b) corner creation on an interior vertex
+    const std::size_t corner = add_corner(other.points[target.vertex], other.normals[target.vertex]);
+    split_at(target.curve, target.vertex, corner);
+    attach_to_corner(c, back, corner);
+    return true;
+  }
+
+  void merge_ends(std::size_t c, bool back, std::size_t d, bool other_back)
+  {
+    Curve a = m_net.curves[c], b = m_net.curves[d];
+    if(!back)
+      reverse_curve(a);
+    if(other_back)
+      reverse_curve(b);
+    append_curve(a, b);
+    m_net.curves[c] = std::move(a);
+    m_net.curves.erase(m_net.curves.begin() + d);
+  }
+
+  void split_at(std::size_t d, std::size_t vertex, std::size_t corner)
+  {
+    Curve& curve = m_net.curves[d];
+    if(curve.closed)
+    {
+      // Re-open the loop at the corner: it starts and ends there.
+      Curve open;
+      const std::size_t m = curve.points.size() - 1;
+      for(std::size_t k = 0; k <= m; ++k)
+      {
+        open.points.push_back(curve.points[(vertex + k) % m]);
+        open.normals.push_back(curve.normals[(vertex + k) % m]);
+      }
+      open.front_corner = open.back_corner = corner;
+      curve = std::move(open);
+      return;
+    }
+    Curve second;
+    second.points.assign(curve.points.begin() + vertex, curve.points.end());
+    second.normals.assign(curve.normals.begin() + vertex, curve.normals.end());
+    second.front_corner = corner;
+    second.back_corner = curve.back_corner;
+    curve.points.resize(vertex + 1);
+    curve.normals.resize(vertex + 1);
+    curve.back_corner = corner;
+    m_net.curves.push_back(std::move(second));
+  }
+
+  std::vector<std::vector<std::pair<std::size_t, bool>>> incidences() const
+  {
+    std::vector<std::vector<std::pair<std::size_t, bool>>> at(m_net.corners.size());
+    for(std::size_t c = 0; c < m_net.curves.size(); ++c)
+    {
+      if(m_net.curves[c].front_corner != no_index)
+        at[m_net.curves[c].front_corner].emplace_back(c, false);
+      if(m_net.curves[c].back_corner != no_index)
+        at[m_net.curves[c].back_corner].emplace_back(c, true);
+    }
+    return at;
+  }
+
+  // Corners with fewer than two curves are not corners; a corner with two curves that continue
+  // each other is not one either: merge through it.
+  void clean_corners()
+  {
+    for(bool changed = true; changed;)
+    {
+      changed = false;
+      const auto at = incidences();
+      for(std::size_t k = 0; k < at.size() && !changed; ++k)
+      {
+        if(at[k].size() == 1)
+        {
+          Curve& c = m_net.curves[at[k][0].first];
+          (at[k][0].second ? c.back_corner : c.front_corner) = no_index;
+          changed = true;
+        }
+        else if(at[k].size() == 2)
+        {
+          const auto [c0, b0] = at[k][0];
+          const auto [c1, b1] = at[k][1];
+          if(m_net.curves[c0].points.size() < 2 || m_net.curves[c1].points.size() < 2)
+            continue;
+          // Tangents pointing out of the corner along each curve.
+          const Vec3 t0 = -end_tangent(m_net.curves[c0], b0), t1 = -end_tangent(m_net.curves[c1], b1);
+          if(t0.dot(t1) > -m_cos_aperture)
+            continue;
+          if(c0 == c1)
+          {
+            Curve& c = m_net.curves[c0];
+            c.front_corner = c.back_corner = no_index;
+            c.points.back() = c.points.front();
+            c.closed = true;
+          }
+          else
+          {
+            Curve& a = m_net.curves[c0];
+            Curve b = m_net.curves[c1];
+            if(!b0)
+              reverse_curve(a);
+            if(b1)
+              reverse_curve(b);
+            a.back_corner = no_index;
+            b.points.erase(b.points.begin());
+            b.normals.erase(b.normals.begin());
+            append_curve(a, b);
+            m_net.curves.erase(m_net.curves.begin() + c1);
+          }
+          changed = true;
+        }
+      }
+    }
+    remove_unused_corners();
+  }
+
+  void remove_unused_corners()
+  {
+    const auto at = incidences();
+    std::vector<std::size_t> renumber(m_net.corners.size(), no_index);
+    std::vector<Corner_node> kept;
+    for(std::size_t k = 0; k < m_net.corners.size(); ++k)
+      if(!at[k].empty())
+      {
+        renumber[k] = kept.size();
+        kept.push_back(m_net.corners[k]);
+      }
+    m_net.corners.swap(kept);
+    for(Curve& c : m_net.curves)
+    {
+      if(c.front_corner != no_index)
+        c.front_corner = renumber[c.front_corner];
+      if(c.back_corner != no_index)
+        c.back_corner = renumber[c.back_corner];
+    }
+  }
+
+  // Mesh_3 rounds off turns inside a polyline: split sharp turns into two curves at a corner.
+  void split_sharp_turns()
+  {
+    for(std::size_t c = 0; c < m_net.curves.size();)
+      if(!split_first_sharp_turn(c))
+        ++c;
+  }
+
+  // Splits curve `c` at its first sharp turn; the pieces are examined again (the tail is
+  // appended to the list, a reopened loop keeps its index).
+  bool split_first_sharp_turn(std::size_t c)
+  {
+    const double cos_turn = std::cos(radians(C::sharp_turn_angle));
+    const Curve& curve = m_net.curves[c];
+    for(std::size_t v = 1; v + 1 < curve.points.size(); ++v)
+    {
+      const Vec3 a = (curve.points[v] - curve.points[v - 1]).normalized();
+      const Vec3 b = (curve.points[v + 1] - curve.points[v]).normalized();
+      if(a.dot(b) < cos_turn)
+      {
+        const std::size_t corner = add_corner(curve.points[v], curve.normals[v]);
+        split_at(c, v, corner);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void laplacian_pass(Curve& c) const
+  {
+    const std::size_t n = c.points.size();
+    if(n < 3)
+      return;
+    std::vector<Vec3> next = c.points;
+    const std::size_t first = c.closed ? 0 : 1, last = n - 1;
+    for(std::size_t v = first; v < last; ++v)
+    {
+      const Vec3& prev = c.points[v == 0 ? n - 2 : v - 1];
+      const Vec3& succ = c.points[v + 1];
+      const double wa = 1. / (std::max)((prev - c.points[v]).norm(), 1e-12);
+      const double wb = 1. / (std::max)((succ - c.points[v]).norm(), 1e-12);
+      const Vec3 target = (wa * prev + wb * succ) / (wa + wb);
+      next[v] = c.points[v] + C::laplacian_step * (target - c.points[v]);
+    }
+    if(c.closed)
+      next[n - 1] = next[0];
+    c.points.swap(next);
+  }
+
+  // Exact shared points, consistent normals.
+  void finalize()
+  {
+    for(Curve& c : m_net.curves)
+    {
+      if(c.front_corner != no_index)
+        c.points.front() = m_net.corners[c.front_corner].point;
+      if(c.back_corner != no_index)
+        c.points.back() = m_net.corners[c.back_corner].point;
+      if(c.closed)
+        c.points.back() = c.points.front();
+      for(std::size_t v = 1; v < c.normals.size(); ++v)
+        c.normals[v] = align_normal_pair(c.normals[v - 1], c.normals[v]);
+    }
+  }
+};
+
+/// Stage 5.
+inline void complete_polylines(Curve_network& network, const Scales& scales, const Settings& settings)
+{
+  Curve_completion(network, scales, settings).run();
+}
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,514 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Stage 2 (paper 3.3): robust moving least squares. A forward search splits the neighbourhood
+// of each candidate into the smooth surfaces that meet there; the candidate is then projected
+// onto the intersection of the two closest surfaces (edge point) and of three (corner point).
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RMLS_PROJECTION_IMPL_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RMLS_PROJECTION_IMPL_H
+
+#include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
+#include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+
+/// Forward search constants (counts of points unless stated).
+struct Forward_search_constants
+{
+  static constexpr std::size_t seed_size = 20;          // points in a seed subset
+  static constexpr std::size_t seed_trials = 8;         // seed subsets tried per surface
+  static constexpr double batch_fraction = 0.2;         // largest batch added, relative to the set
+  static constexpr std::size_t max_growth_steps = 60;
+  static constexpr std::size_t max_surfaces = 3;
+  static constexpr double min_surface_fraction = 0.1;   // of the neighbourhood
+  static constexpr std::size_t min_surface_points = 8;
+  static constexpr double max_offset = 1.0;             // |e - p| relative to the neighbourhood radius
+  static constexpr double max_support_gap = 0.5;        // member-to-e distance, relative to the radius
+  static constexpr std::size_t max_newton_steps = 50;
+  static constexpr double newton_step_tolerance = 1e-4; // relative to the sampling spacing
+  static constexpr std::size_t refinement_rounds = 3;
+};
+
+/// One smooth surface found by the forward search.
+struct Rmls_surface
+{
+  Height_field fit;
+  std::vector<std::size_t> members; // local indices into the neighbourhood
+  Vec3 centroid = Vec3::Zero();
+};
+
+/// Closest point to `q` on the line where the planes (a, na) and (b, nb) meet.
+/// Returns false if the planes are nearly parallel.
+inline bool closest_on_plane_intersection(const Vec3& q, const Vec3& a, const Vec3& na,
+                                          const Vec3& b, const Vec3& nb, Vec3& out)
+{
+  // x = q + la * na + lb * nb with na.x = na.a and nb.x = nb.b.
+  const double c = na.dot(nb);
+  const double det = 1 - c * c;
+  if(det < 1e-8)
+    return false;
+  const double ra = na.dot(a - q), rb = nb.dot(b - q);
+  const double la = (ra - c * rb) / det, lb = (rb - c * ra) / det;
+  out = q + la * na + lb * nb;
+  return out.allFinite();
+}
+
+/// The per-thread workspace and algorithm of the forward search.
+class Forward_search
+{
+  typedef Forward_search_constants C;
+
+public:
+  std::vector<Vec3> local;          // the neighbourhood, nearest to the candidate first
+  std::vector<Rmls_surface> surfaces;
+
+  /// Splits `local` into at most three smooth surfaces with tolerance `tolerance`. The search
+  /// grows planes (`degree` 1): a quadric can bend across a shallow crease while it grows.
+  void run(double tolerance, int degree)
+  {
+    surfaces.clear();
+    const std::size_t n = local.size();
+    m_assigned.assign(n, false);
+    const std::size_t min_size = (std::max)(C::min_surface_points, std::size_t(C::min_surface_fraction * double(n)));
+    while(surfaces.size() < C::max_surfaces)
+    {
+      std::size_t remaining = std::count(m_assigned.begin(), m_assigned.end(), false);
+      if(remaining < min_size)
+        break;
+      Rmls_surface surface;
+      if(!find_seed(tolerance, surface.members))
+        break;
+      grow(tolerance, degree, surface);
+      if(surface.members.size() < min_size)
+        break;
+      for(std::size_t i : surface.members)
+        m_assigned[i] = true;
+      surface.centroid = Vec3::Zero();
+      for(std::size_t i : surface.members)
+        surface.centroid += local[i];
+      surface.centroid /= double(surface.members.size());
+      surfaces.push_back(std::move(surface));
+    }
+  }
+
+  /// Competitive refinement of the surfaces in `set`: every point goes to the surface it fits
+  /// best (if within the tolerance) and each surface is refitted. This undoes the greed of the
+  /// forward search, where the first surface also takes the points of the next one that lie
+  /// within the tolerance near the crease and is biased towards it.
+  void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds)
+  {
+    for(std::size_t round = 0; round < rounds; ++round)
+    {
+      for(Rmls_surface* s : set)
+        s->members.clear();
+      for(std::size_t i = 0; i < local.size(); ++i)
+      {
+        Rmls_surface* best = nullptr;
+        double best_residual = tolerance;
+        for(Rmls_surface* s : set)
+        {
+          const double r = s->fit.residual(local[i]);
+          if(r <= best_residual)
+          {
+            best_residual = r;
+            best = s;
+          }
+        }
+        if(best != nullptr)
+          best->members.push_back(i);
+      }
+      for(Rmls_surface* s : set)
+        if(s->members.size() >= 3)
+          refit(s->members, degree, s->fit);
+    }
+    for(Rmls_surface* s : set)
+    {
+      s->centroid = Vec3::Zero();
+      for(std::size_t i : s->members)
+        s->centroid += local[i];
+      s->centroid /= double((std::max<std::size_t>)(1, s->members.size()));
+    }
+  }
+
+private:
+  std::vector<bool> m_assigned, m_member;
+  std::vector<std::size_t> m_free, m_centers, m_seed;
+  std::vector<double> m_distance, m_residual;
+  std::vector<std::pair<double, std::size_t>> m_ranked;
+
+  // Least-residual seed: planes through small subsets around a few well spread centres.
+  bool find_seed(double tolerance, std::vector<std::size_t>& seed)
+  {
+    m_free.clear();
+    for(std::size_t i = 0; i < local.size(); ++i)
+      if(!m_assigned[i])
+        m_free.push_back(i);
+    const std::size_t size = (std::min)(C::seed_size, m_free.size());
+    // Farthest point sampling of the centres, starting from the free point nearest the candidate.
+    m_centers.assign(1, m_free.front());
+    m_distance.assign(m_free.size(), std::numeric_limits<double>::infinity());
+    while(m_centers.size() < (std::min)(C::seed_trials, m_free.size()))
+    {
+      std::size_t best = 0;
+      for(std::size_t j = 0; j < m_free.size(); ++j)
+      {
+        m_distance[j] = (std::min)(m_distance[j], (local[m_free[j]] - local[m_centers.back()]).squaredNorm());
+        if(m_distance[j] > m_distance[best])
+          best = j;
+      }
+      m_centers.push_back(m_free[best]);
+    }
+    double best_score = std::numeric_limits<double>::infinity();
+    for(std::size_t center : m_centers)
+    {
+      m_ranked.clear();
+      for(std::size_t j : m_free)
+        m_ranked.emplace_back((local[j] - local[center]).squaredNorm(), j);
+      std::nth_element(m_ranked.begin(), m_ranked.begin() + (size - 1), m_ranked.end());
+      m_seed.clear();
+      for(std::size_t j = 0; j < size; ++j)
+        m_seed.push_back(m_ranked[j].second);
+      Local_frame frame;
+      Vec3 spread;
+      Height_field plane;
+      if(!principal_frame(local, m_seed, frame, spread) || !plane.fit(local, m_seed, frame, 1))
+        continue;
+      double score = 0;
+      for(std::size_t j : m_seed)
+        score = (std::max)(score, plane.residual(local[j]));
+      if(score < best_score)
+      {
+        best_score = score;
+        seed = m_seed;
+      }
+    }
+    return best_score <= tolerance;
+  }
+
+  bool refit(const std::vector<std::size_t>& members, int degree, Height_field& fit) const
+  {
+    Local_frame frame;
+    Vec3 spread;
+    return principal_frame(local, members, frame, spread) && fit.fit(local, members, frame, degree);
+  }
+
+  // Grows the seed by batches of the best-fitting free points while they fit within the
+  // tolerance, and releases members that no longer fit.
+  void grow(double tolerance, int degree, Rmls_surface& surface)
+  {
+    std::vector<std::size_t>& members = surface.members;
+    m_member.assign(local.size(), false);
+    for(std::size_t i : members)
+      m_member[i] = true;
+    for(std::size_t step = 0; step < C::max_growth_steps; ++step)
+    {
+      if(!refit(members, degree, surface.fit))
+        break;
+      bool changed = false;
+      // Release members that the refit left out of the tolerance.
+      std::size_t kept = 0;
+      for(std::size_t i : members)
+        if(surface.fit.residual(local[i]) <= tolerance)
+          members[kept++] = i;
+        else
+          m_member[i] = false, changed = true;
+      members.resize(kept);
+      if(members.size() < 3)
+        break;
+      // Add the best free points, at most a fraction of the current set.
+      m_ranked.clear();
+      for(std::size_t j = 0; j < local.size(); ++j)
+        if(!m_assigned[j] && !m_member[j])
+        {
+          const double r = surface.fit.residual(local[j]);
+          if(r <= tolerance)
+            m_ranked.emplace_back(r, j);
+        }
+      const std::size_t batch = (std::min)(m_ranked.size(),
+        (std::max<std::size_t>)(1, std::size_t(C::batch_fraction * double(members.size()))));
+      if(batch > 0)
+      {
+        std::partial_sort(m_ranked.begin(), m_ranked.begin() + batch, m_ranked.end());
+        for(std::size_t j = 0; j < batch; ++j)
+        {
+          members.push_back(m_ranked[j].second);
+          m_member[m_ranked[j].second] = true;
+        }
+        changed = true;
+      }
+      if(!changed)
+        break;
+    }
+    std::sort(members.begin(), members.end());
+    refit(members, degree, surface.fit);
+  }
+};
+
+struct Projection
+{
+  bool has_edge = false, has_corner = false;
+  Edge_sample edge;
+  Corner_sample corner;
+};
+
+/// Newton-like projection of `start` onto the intersection of surfaces `a` and `b`: project onto
+/// each surface, intersect the two tangent planes, move to the closest point of that line.
+inline bool project_on_edge(const Rmls_surface& a, const Rmls_surface& b, const Vec3& start,
+                            double step_tolerance, Vec3& e, std::array<Vec3, 2>& normals)
+{
+  e = start;
+  for(std::size_t it = 0; it < Forward_search_constants::max_newton_steps; ++it)
+  {
+    const Vec3 fa = a.fit.foot(e), fb = b.fit.foot(e);
+    const Vec3 na = a.fit.normal(e), nb = b.fit.normal(e);
+    Vec3 next;
+    if(!closest_on_plane_intersection(e, fa, na, fb, nb, next))
+      return false;
+    const double step = (next - e).norm();
+    e = next;
+    if(step < step_tolerance)
+    {
+      normals = {{a.fit.normal(e), b.fit.normal(e)}};
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Same with three surfaces: the common point of the three tangent planes.
+inline bool project_on_corner(const Rmls_surface* s[3], const Vec3& start, double step_tolerance,
+                              Vec3& c, std::array<Vec3, 3>& normals)
+{
+  c = start;
+  for(std::size_t it = 0; it < Forward_search_constants::max_newton_steps; ++it)
+  {
+    Eigen::Matrix3d m;
+    Vec3 rhs;
+    for(int i = 0; i < 3; ++i)
+    {
+      const Vec3 n = s[i]->fit.normal(c);
+      m.row(i) = n.transpose();
+      rhs[i] = n.dot(s[i]->fit.foot(c));
+    }
+    if(std::abs(m.determinant()) < 1e-3)
+      return false;
+    const Vec3 next = m.partialPivLu().solve(rhs);
+    if(!next.allFinite())
+      return false;
+    const double step = (next - c).norm();
+    c = next;
+    if(step < step_tolerance)
+    {
+      for(int i = 0; i < 3; ++i)
+        normals[i] = s[i]->fit.normal(c);
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Orients `n`, the normal of a surface at `at`, away from the points of the other surfaces.
+inline Vec3 orient_away(const Vec3& n, const Vec3& at, const Vec3& other_centroid)
+{
+  return (other_centroid - at).dot(n) > 0 ? Vec3(-n) : n;
+}
+
+inline double distance_to_members(const Forward_search& search, const Rmls_surface& s, const Vec3& q)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(std::size_t i : s.members)
+    best = (std::min)(best, (search.local[i] - q).squaredNorm());
+  return std::sqrt(best);
+}
+
+/// Degree of the final surface fits: the user's jet degree, but planes when the noise dominates
+/// the sampling (a quadric then fits the noise and bends across the crease).
+inline int surface_degree(const Scales& scales, const Settings& settings)
+{
+  return scales.noise > noise_ratio_for_growth * scales.spacing ? 1 : settings.degree_fitting;
+}
+
+/// The RMLS projection of one candidate whose neighbourhood is in `search.local`.
+inline Projection project_candidate(Forward_search& search, const Vec3& p, std::size_t source,
+                                    const Scales& scales, const Settings& settings)
+{
+  typedef Forward_search_constants C;
+  Projection result;
+  search.run(scales.rmls_tolerance, 1);
+  std::vector<Rmls_surface>& surfaces = search.surfaces;
+  const double radius = (search.local.back() - p).norm();
+  const double cos_sharp = std::cos(radians(settings.sharpness_angle));
+  const double step_tolerance = C::newton_step_tolerance * scales.spacing;
+
+  // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
+  std::vector<Rmls_surface*> distinct;
+  for(Rmls_surface& s : surfaces)
+  {
+    const Vec3 n = s.fit.normal(p);
+    bool parallel = false;
+    for(const Rmls_surface* d : distinct)
+      parallel = parallel || std::abs(d->fit.normal(p).dot(n)) > cos_sharp;
+    if(!parallel)
+      distinct.push_back(&s);
+  }
+  if(distinct.size() >= 2)
+    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings), C::refinement_rounds);
+  distinct.erase(std::remove_if(distinct.begin(), distinct.end(), [&](const Rmls_surface* s) {
+                   return s->members.size() < C::min_surface_points; }), distinct.end());
+  if(distinct.size() < 2)
+    return result;
+  // The surfaces closest to the candidate define its edge (and corner).
+  std::stable_sort(distinct.begin(), distinct.end(), [&](const Rmls_surface* a, const Rmls_surface* b) {
+    return a->fit.residual(p) < b->fit.residual(p);
+  });
+
+  auto supported = [&](const Rmls_surface& s, const Vec3& q) {
+    return distance_to_members(search, s, q) <= C::max_support_gap * radius;
+  };
+  auto others_centroid = [&](const Rmls_surface* self, const Rmls_surface* const* set, int count) {
+    Vec3 sum = Vec3::Zero();
+    double weight = 0;
+    for(int i = 0; i < count; ++i)
+      if(set[i] != self)
+      {
+        sum += double(set[i]->members.size()) * set[i]->centroid;
+        weight += double(set[i]->members.size());
+      }
+    return Vec3(sum / weight);
+  };
+
+  Vec3 e;
+  std::array<Vec3, 2> en;
+  const Rmls_surface* pair[2] = {distinct[0], distinct[1]};
+  if(project_on_edge(*pair[0], *pair[1], p, step_tolerance, e, en)
+     && (e - p).norm() <= C::max_offset * radius
+     && std::abs(en[0].dot(en[1])) <= cos_sharp
+     && supported(*pair[0], e) && supported(*pair[1], e))
+  {
+    result.has_edge = true;
+    result.edge.point = e;
+    result.edge.source = source;
+    for(int i = 0; i < 2; ++i)
+      result.edge.normals[i] = orient_away(en[i], e, others_centroid(pair[i], pair, 2));
+  }
+  if(!result.has_edge || distinct.size() < 3)
+    return result;
+
+  const Rmls_surface* triple[3] = {distinct[0], distinct[1], distinct[2]};
+  Vec3 c;
+  std::array<Vec3, 3> cn;
+  if(project_on_corner(triple, p, step_tolerance, c, cn)
+     && (c - p).norm() <= C::max_offset * radius
+     && std::abs(cn[0].dot(cn[2])) <= cos_sharp && std::abs(cn[1].dot(cn[2])) <= cos_sharp
+     && supported(*triple[0], c) && supported(*triple[1], c) && supported(*triple[2], c))
+  {
+    result.has_corner = true;
+    result.corner.point = c;
+    result.corner.source = source;
+    result.corner.weight = 1. / (std::max)((c - e).norm(), 1e-12 * scales.spacing);
+    for(int i = 0; i < 3; ++i)
+      result.corner.normals[i] = orient_away(cn[i], c, others_centroid(triple[i], triple, 3));
+  }
+  return result;
+}
+
+/// Groups corner points closer than the corner radius; in each group the member closest to the
+/// weighted average survives (paper 3.3). Groups with fewer than `min_members` are dropped
+/// as isolated three-surface splits.
+inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample> corners, double radius)
+{
+  const std::size_t min_members = 3;
+  std::stable_sort(corners.begin(), corners.end(), [](const Corner_sample& a, const Corner_sample& b) {
+    return a.weight > b.weight;
+  });
+  std::vector<Vec3> points;
+  for(const Corner_sample& c : corners)
+    points.push_back(c.point);
+  Point_index index;
+  index.build<CGAL::Sequential_tag>(points);
+  std::vector<bool> grouped(corners.size(), false);
+  std::vector<std::size_t> group;
+  std::vector<Corner_sample> kept;
+  for(std::size_t i = 0; i < corners.size(); ++i)
+  {
+    if(grouped[i])
+      continue;
+    index.within(corners[i].point, radius, group);
+    std::sort(group.begin(), group.end());
+    group.erase(std::remove_if(group.begin(), group.end(), [&](std::size_t j) { return grouped[j]; }), group.end());
+    Vec3 average = Vec3::Zero();
+    double weight = 0;
+    for(std::size_t j : group)
+    {
+      grouped[j] = true;
+      average += corners[j].weight * corners[j].point;
+      weight += corners[j].weight;
+    }
+    if(group.size() < min_members)
+      continue;
+    average /= weight;
+    std::size_t best = group.front();
+    for(std::size_t j : group)
+      if((corners[j].point - average).squaredNorm() < (corners[best].point - average).squaredNorm())
+        best = j;
+    kept.push_back(corners[best]);
+  }
+  return kept;
+}
+
+/// Stage 2 on every candidate. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool rmls_project(const std::vector<Vec3>& points, const Point_index& index,
+                  const std::vector<std::size_t>& candidates, const Scales& scales,
+                  const Settings& settings, Progress progress, Feature_samples& out)
+{
+  out = Feature_samples();
+  std::vector<Projection> projections(candidates.size());
+  if(scales.rmls_neighbors == 0)
+    return progress.report(1.);
+  if(!parallel_blocks<ConcurrencyTag>(candidates.size(), progress, [&](std::size_t first, std::size_t last) {
+       Forward_search search;
+       std::vector<std::size_t> neighbors;
+       for(std::size_t c = first; c < last; ++c)
+       {
+         const Vec3& p = points[candidates[c]];
+         index.nearest(p, scales.rmls_neighbors, neighbors);
+         search.local.clear();
+         for(std::size_t j : neighbors)
+           search.local.push_back(points[j]);
+         projections[c] = project_candidate(search, p, candidates[c], scales, settings);
+       }
+     }))
+    return false;
+
+  std::vector<Corner_sample> corners;
+  for(const Projection& pr : projections)
+  {
+    if(pr.has_edge)
+      out.edges.push_back(pr.edge);
+    if(pr.has_corner)
+      corners.push_back(pr.corner);
+  }
+  out.corners = group_corner_points(std::move(corners), scales.corner_radius);
+  return true;
+}
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif

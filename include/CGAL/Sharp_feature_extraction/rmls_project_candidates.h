@@ -1,0 +1,66 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_RMLS_PROJECT_CANDIDATES_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_RMLS_PROJECT_CANDIDATES_H
+
+#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+#include <CGAL/Sharp_feature_extraction/internal/rmls_projection_impl.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Stage 2: projects the candidate points onto the intersections of the smooth surfaces that
+/// meet near them (paper, section 3.3), with robust moving least squares (RMLS).
+///
+/// For each candidate, a forward search splits its `rmls_neighbors` nearest points into smooth
+/// surfaces: a least-residual seed of 20 points grows by batches of the best-fitting points while
+/// their residual stays below the RMLS tolerance; the surface is removed and the search repeats,
+/// up to three surfaces. Surfaces whose normals differ by less than `sharpness_angle` are one
+/// surface split by noise. With one surface the candidate is dropped; with two, a Newton-like
+/// iteration projects it onto their intersection (an edge point with both normals); with three,
+/// also onto the common point of the three (a corner point). Corner points within the corner
+/// radius are grouped, keeping the one closest to the weighted average (weights 1/|c - e|).
+///
+/// \param points the input points (the same range as given to `compute_candidate_points()`).
+/// \param candidates the output of `compute_candidate_points()`: its indices and scales are used.
+/// \param projected receives the edge and corner points.
+/// \param np optional named parameters: `point_map`, `geom_traits`, `callback` as in
+///   `compute_candidate_points()`, and
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{degree_fitting} degree of the surface fits (1 or 2); default: 2. \cgalParamNEnd
+///   \cgalParamNBegin{sharpness_angle} smallest angle, in degrees, between the normals of two
+///     surfaces that meet at a sharp feature; default: 25. \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns `false` if the callback interrupted the computation.
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+bool rmls_project_candidates(
+  const PointRange& points,
+  const Candidate_points<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>& candidates,
+  Feature_point_set<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>& projected,
+  const NamedParameters& np = parameters::default_values())
+{
+  namespace sfe = Sharp_feature_extraction::internal;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits GT;
+  const sfe::Settings settings = sfe::read_settings(np);
+  const std::vector<sfe::Vec3> input = sfe::read_input_points(points, NP_helper::get_const_point_map(points, np));
+  for(std::size_t i : candidates.indices)
+    if(i >= input.size())
+      throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
+  sfe::Point_index index;
+  index.build<ConcurrencyTag>(input);
+  const sfe::Scales scales = sfe::to_internal(candidates.scales);
+  sfe::Feature_samples out;
+  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, index, candidates.indices, scales, settings,
+                                                           sfe::Progress(settings.callback), out);
+  projected = sfe::to_public<GT>(out, scales);
+  return completed;
+}
+
+} // namespace CGAL
+
+#endif

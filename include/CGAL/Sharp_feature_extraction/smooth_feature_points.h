@@ -1,0 +1,46 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_SMOOTH_FEATURE_POINTS_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_SMOOTH_FEATURE_POINTS_H
+
+#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+#include <CGAL/Sharp_feature_extraction/internal/smoothing_impl.h>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Stage 3: smooths the edge points in place (paper, section 3.4).
+///
+/// Each edge point moves to its orthogonal projection on the principal line of its neighbourhood:
+/// the nearest 10 edge points of the same crease (normal pairs within 25 degrees), grown by 5
+/// up to 30 until the largest covariance eigenvalue carries 80% of the total. Neighbourhoods
+/// never reach past the nearest corner point, so corners stay sharp; corner points do not move.
+/// In the last pass the normals are averaged over the neighbourhood, keeping their order and
+/// orientation.
+///
+/// \param features the output of `rmls_project_candidates()`, smoothed in place.
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_iterations} number of smoothing passes; default: 3. \cgalParamNEnd
+///   \cgalParamNBegin{callback} progress in [0,1]; returning `false` stops. \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns `false` if the callback interrupted the computation (the points are then unchanged).
+template <typename ConcurrencyTag, typename GeomTraits,
+          typename NamedParameters = parameters::Default_named_parameters>
+bool smooth_feature_points(Feature_point_set<GeomTraits>& features,
+                           const NamedParameters& np = parameters::default_values())
+{
+  namespace sfe = Sharp_feature_extraction::internal;
+  const sfe::Settings settings = sfe::read_settings(np);
+  sfe::Feature_samples samples = sfe::to_internal(features);
+  if(!sfe::smooth_edge_points<ConcurrencyTag>(samples, settings, sfe::Progress(settings.callback)))
+    return false;
+  features = sfe::to_public<GeomTraits>(samples, sfe::to_internal(features.scales));
+  return true;
+}
+
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,266 @@
+#!/usr/bin/env bash
+# Benchmark of sharp feature extraction: accuracy, robustness and speed against ground truth
+# creases of CAD meshes and against CGAL's VCM, written up in one report.
+#
+#   scripts/bench.sh            full run (about 1.5 h on 2 cores): benchmark/results/REPORT.md
+#   scripts/bench.sh --quick    smoke run (under 5 min once built): out/bench_quick/report/REPORT.md
+#
+# Options:
+#   --quick          fewer parts, sizes and configurations; VCM at its fixed default setting
+#   --data DIR       where clouds' results, ground truth and pictures go (default out/bench or
+#                    out/bench_quick); it is emptied first: everything is regenerated
+#   --report DIR     where REPORT.md and its PNGs go (default benchmark/results, or
+#                    out/bench_quick/report with --quick)
+#   --build DIR      build directory (default out/build-bench)
+#
+# Installs the Debian packages it needs (when missing), builds the benchmark programs with
+# -DSFE_BUILD_BENCHMARK=ON, and then, each configuration in its own process:
+#   1. ground truth of each part (sfe_ground_truth) and a self-test of the scoring;
+#   2. the VCM sweep of R, r and threshold on fandisk at 100k points (full run only);
+#   3. every part x cloud variant: our pipeline (sfe_bench_run) and VCM (sfe_vcm_run);
+#   4. scaling on fandisk from 50k to 2M points;
+#   5. the report (benchmark/Sharp_feature_extraction/make_report.py).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+QUICK=0
+DATA=""
+REPORT=""
+BUILD="$ROOT/out/build-bench"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) QUICK=1 ;;
+    --data) DATA="$2"; shift ;;
+    --report) REPORT="$2"; shift ;;
+    --build) BUILD="$2"; shift ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    *) echo "bench.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+if [ "$QUICK" = 1 ]; then
+  DATA="${DATA:-$ROOT/out/bench_quick}"
+  REPORT="${REPORT:-$ROOT/out/bench_quick/report}"
+else
+  DATA="${DATA:-$ROOT/out/bench}"
+  REPORT="${REPORT:-$ROOT/benchmark/results}"
+fi
+case "$DATA" in /*) ;; *) DATA="$ROOT/$DATA" ;; esac
+case "$REPORT" in /*) ;; *) REPORT="$ROOT/$REPORT" ;; esac
+case "$BUILD" in /*) ;; *) BUILD="$ROOT/$BUILD" ;; esac
+
+PYTHON=/usr/bin/python3 # Debian's, with Debian's matplotlib (a pyenv python may shadow it)
+START_SECONDS=$SECONDS
+log() { printf '[bench %4ds] %s\n' "$((SECONDS - START_SECONDS))" "$*"; }
+
+# ------------------------------------------------------------------------------------------
+# Packages, meshes, build. scripts/common.sh (shared with demo.sh and test.sh) provides
+# install_missing_packages and fetch_cgal_mesh when present; the fallbacks below do the same.
+# ------------------------------------------------------------------------------------------
+if [ -f "$ROOT/scripts/common.sh" ]; then
+  # shellcheck source=/dev/null
+  source "$ROOT/scripts/common.sh"
+fi
+
+BENCH_PACKAGES="cmake make g++ libcgal-dev libcgal-demo libeigen3-dev libboost-dev libtbb-dev \
+libgmp-dev libmpfr-dev python3 python3-matplotlib python3-numpy python3-pil"
+bench_install_packages() {
+  local missing=()
+  for p in $BENCH_PACKAGES; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    log "installing Debian packages: ${missing[*]}"
+    local sudo=""
+    [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  fi
+}
+
+CGAL_DATA_ARCHIVE=/usr/share/doc/libcgal-dev/data.tar.gz
+bench_fetch_mesh() { # NAME -> $MESHES/NAME.off
+  local out="$MESHES/$1.off"
+  if [ ! -s "$out" ]; then
+    tar -xzf "$CGAL_DATA_ARCHIVE" -O "data/meshes/$1.off" > "$out.tmp"
+    mv "$out.tmp" "$out"
+  fi
+}
+
+bench_install_packages
+if declare -F install_missing_packages >/dev/null; then
+  install_missing_packages
+fi
+
+MESHES="$ROOT/out/meshes"
+mkdir -p "$MESHES"
+
+log "building the benchmark programs in $BUILD"
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSFE_BUILD_BENCHMARK=ON \
+  -DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_TESTS=OFF >"$BUILD.cmake.log" 2>&1 ||
+  { cat "$BUILD.cmake.log"; exit 1; }
+# Only the benchmark is configured (examples and tests off), so "all" is exactly its programs,
+# built two at a time.
+nice cmake --build "$BUILD" -j2
+BIN="$BUILD/benchmark/Sharp_feature_extraction"
+MAKE_REPORT="$ROOT/benchmark/Sharp_feature_extraction/make_report.py"
+
+# ------------------------------------------------------------------------------------------
+# What is measured.
+# ------------------------------------------------------------------------------------------
+# Angle of the ground truth's sharp edges, per part (30 degrees unless stated).
+truth_angle() { case "$1" in anchor_dense|couplingdown) echo 40 ;; *) echo 30 ;; esac; }
+# Cloud variants: name:noise:outliers:denser (noise and outliers as fractions of dB / of N).
+NOISE_VARIANTS="noise0:0:0:1 noise0.25:0.0025:0:1 noise0.5:0.005:0:1 noise1:0.01:0:1"
+OTHER_VARIANTS="denser5:0:0:5 outliers1:0:0.01:1 outliers5:0:0.05:1"
+# VCM sweep (fractions of dB for R and r), on fandisk at 100k points at each noise level; the
+# setting with the best mean point-F1 at eps 0.5% over the noise levels is used everywhere.
+SWEEP_R="0.01,0.02,0.04"
+SWEEP_r="0,0.005,0.01"
+SWEEP_THRESHOLD="0.02,0.04,0.06,0.08,0.12,0.16,0.2"
+# The setting the quick run uses without sweeping (the full run's choice on this machine).
+VCM_DEFAULT="0.02 0.005 0.04"
+VCM_TIMEOUT=600 # seconds: VCM runs longer than this (large N) are skipped and reported so
+
+if [ "$QUICK" = 1 ]; then
+  PARTS="fandisk part rotor"
+  CONTROLS="itemb"
+  POINTS=50000
+  VARIANTS="noise0:0:0:1 noise0.5:0.005:0:1"
+  CONTROL_VARIANTS="noise0:0:0:1"
+  SCALING_SIZES="50000 100000"
+  DO_SWEEP=0
+  REPEAT_CHECK=0
+else
+  PARTS="fandisk anchor joint part pinion rotor spool u cross"
+  CONTROLS="itemb"
+  POINTS=100000
+  VARIANTS="$NOISE_VARIANTS $OTHER_VARIANTS"
+  CONTROL_VARIANTS="$VARIANTS"
+  SCALING_SIZES="50000 100000 200000 500000 1000000 2000000"
+  DO_SWEEP=1
+  REPEAT_CHECK=1
+fi
+SEED=1
+
+# ------------------------------------------------------------------------------------------
+# Run.
+# ------------------------------------------------------------------------------------------
+log "regenerating $DATA from scratch"
+LOAD_AT_START="$(cut -d' ' -f1-3 /proc/loadavg)"
+rm -rf "$DATA"
+mkdir -p "$DATA/truth" "$DATA/pictures" "$DATA/curves" "$DATA/logs"
+
+# Runs one configuration in its own process, stderr to the log. A failure or a time-out is
+# recorded as a row with a status (the report lists it) and does not stop the benchmark.
+# Returns the command's exit code (124: timed out).
+run_row() { # FILE LABEL METHOD COMMAND...
+  local file="$1" label="$2" method="$3"; shift 3
+  local errors="$DATA/logs/${label}_$method.err" status=0
+  nice "$@" --label "$label" --output "$file" 2>"$errors" || status=$?
+  if [ "$status" != 0 ]; then
+    local what=failed
+    [ "$status" = 124 ] && what=timeout
+    log "  $what (exit $status): $label $method (see $errors)"
+    printf '{"label": "%s", "method": "%s", "status": "%s", "exit_code": %d}\n' \
+      "$label" "$method" "$what" "$status" >>"$file"
+  fi
+  return 0
+}
+
+log "ground truth"
+for part in $PARTS $CONTROLS; do
+  if declare -F fetch_cgal_mesh >/dev/null; then fetch_cgal_mesh "$part" >/dev/null; fi
+  bench_fetch_mesh "$part"
+  "$BIN/sfe_ground_truth" --mesh "$MESHES/$part.off" --prefix "$DATA/truth/$part" \
+    --angle "$(truth_angle "$part")" --label "$part" --output "$DATA/truth.jsonl" \
+    --picture "$DATA/pictures/truth_$part.png"
+done
+"$BIN/sfe_scoring_selftest" >"$DATA/logs/selftest_cube.txt"
+"$BIN/sfe_scoring_selftest" --truth "$DATA/truth/fandisk" >"$DATA/logs/selftest_fandisk.txt"
+log "scoring self-test: $(tail -1 "$DATA/logs/selftest_cube.txt") (cube), $(tail -1 "$DATA/logs/selftest_fandisk.txt") (fandisk)"
+
+if [ "$DO_SWEEP" = 1 ]; then
+  log "VCM sweep on fandisk, 100k points: R {$SWEEP_R} x r {$SWEEP_r} x threshold {$SWEEP_THRESHOLD}"
+  for variant in $NOISE_VARIANTS; do
+    IFS=: read -r name noise outliers denser <<<"$variant"
+    log "  sweep $name"
+    run_row "$DATA/sweep.jsonl" "sweep_$name" vcm "$BIN/sfe_vcm_run" --mesh "$MESHES/fandisk.off" \
+      --truth "$DATA/truth/fandisk" --points 100000 --noise "$noise" --outliers "$outliers" \
+      --denser "$denser" --seed "$SEED" --R "$SWEEP_R" --r "$SWEEP_r" --threshold "$SWEEP_THRESHOLD"
+  done
+  read -r VCM_R VCM_r VCM_T <<<"$("$PYTHON" "$MAKE_REPORT" --choose-vcm "$DATA/sweep.jsonl")"
+else
+  read -r VCM_R VCM_r VCM_T <<<"$VCM_DEFAULT"
+fi
+log "VCM setting: R = $VCM_R dB, r = $VCM_r dB, threshold = $VCM_T"
+echo "$VCM_R $VCM_r $VCM_T" >"$DATA/vcm_setting.txt"
+
+log "accuracy and robustness: $POINTS points, parts: $PARTS, controls: $CONTROLS"
+for part in $PARTS $CONTROLS; do
+  variants="$VARIANTS"
+  case " $CONTROLS " in *" $part "*) variants="$CONTROL_VARIANTS" ;; esac
+  for variant in $variants; do
+    IFS=: read -r name noise outliers denser <<<"$variant"
+    label="${part}_${name}"
+    cloud=(--mesh "$MESHES/$part.off" --truth "$DATA/truth/$part" --points "$POINTS" --noise "$noise"
+           --outliers "$outliers" --denser "$denser" --seed "$SEED")
+    extra=(--save-curves "$DATA/curves/$label.polylines.txt")
+    if [ "$part" = fandisk ]; then extra+=(--picture "$DATA/pictures/curves_$label.png"); fi
+    log "  $label"
+    run_row "$DATA/accuracy.jsonl" "$label" ours "$BIN/sfe_bench_run" "${cloud[@]}" "${extra[@]}"
+    run_row "$DATA/accuracy.jsonl" "$label" vcm timeout "$VCM_TIMEOUT" "$BIN/sfe_vcm_run" "${cloud[@]}" \
+      --R "$VCM_R" --r "$VCM_r" --threshold "$VCM_T"
+  done
+done
+
+if [ "$REPEAT_CHECK" = 1 ]; then
+  log "repeatability: fandisk noise 0.5% once more"
+  run_row "$DATA/repeat.jsonl" "fandisk_noise0.5" ours "$BIN/sfe_bench_run" --mesh "$MESHES/fandisk.off" \
+    --truth "$DATA/truth/fandisk" --points "$POINTS" --noise 0.005 --seed "$SEED"
+fi
+
+log "scaling on fandisk: $SCALING_SIZES points"
+VCM_SKIP=0
+for n in $SCALING_SIZES; do
+  cloud=(--mesh "$MESHES/fandisk.off" --truth "$DATA/truth/fandisk" --points "$n" --seed "$SEED")
+  log "  ours, $n points"
+  run_row "$DATA/scaling.jsonl" "scaling_$n" ours "$BIN/sfe_bench_run" "${cloud[@]}" --stage-memory 1
+  if [ "$VCM_SKIP" = 1 ]; then
+    printf '{"label": "scaling_%s", "method": "vcm", "points": %s, "status": "skipped"}\n' "$n" "$n" \
+      >>"$DATA/scaling.jsonl"
+    continue
+  fi
+  log "  VCM, $n points"
+  run_row "$DATA/scaling.jsonl" "scaling_$n" vcm timeout "$VCM_TIMEOUT" "$BIN/sfe_vcm_run" "${cloud[@]}" \
+    --R "$VCM_R" --r "$VCM_r" --threshold "$VCM_T"
+  if tail -1 "$DATA/scaling.jsonl" | grep -q '"status": "timeout"'; then
+    log "  VCM took more than $VCM_TIMEOUT s at $n points: skipped for the larger sizes"
+    VCM_SKIP=1
+  fi
+done
+
+# The machine and the commands, for the report.
+{
+  echo "cpu: $(lscpu | sed -n 's/^Model name: *//p' | head -1)"
+  echo "cores: $(nproc)"
+  echo "memory: $(free -g | awk '/^Mem:/ {print $2}') GiB"
+  echo "os: $(. /etc/os-release && echo "$PRETTY_NAME")"
+  echo "compiler: $(c++ --version | head -1)"
+  echo "cgal: $(dpkg-query -W -f='${Version}' libcgal-dev)"
+  echo "tbb: $(dpkg-query -W -f='${Version}' libtbb-dev)"
+  echo "eigen: $(dpkg-query -W -f='${Version}' libeigen3-dev)"
+  echo "commit: $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo none)$(git -C "$ROOT" diff --quiet 2>/dev/null || echo ' (with local changes)')"
+  echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "mode: $([ "$QUICK" = 1 ] && echo quick || echo full)"
+  echo "load average (1/5/15 min) at start: $LOAD_AT_START"
+  echo "load average (1/5/15 min) at end: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "seconds: $((SECONDS - START_SECONDS))"
+} >"$DATA/machine.txt"
+
+log "report: $REPORT/REPORT.md"
+mkdir -p "$REPORT"
+"$PYTHON" "$MAKE_REPORT" --data "$DATA" --report "$REPORT" $([ "$QUICK" = 1 ] && echo --quick)
+log "done in $((SECONDS - START_SECONDS)) s"
