@@ -119,7 +119,7 @@ OTHER_VARIANTS="denser5:0:0:5 outliers1:0:0.01:1 outliers5:0:0.05:1"
 # setting with the best mean point-F1 at eps 0.5% over the noise levels is used everywhere.
 SWEEP_R="0.01,0.02,0.04"
 SWEEP_r="0,0.005,0.01"
-SWEEP_THRESHOLD="0.02,0.04,0.06,0.08,0.12,0.16,0.2"
+SWEEP_THRESHOLD="0.02,0.04,0.06,0.08,0.12,0.16,0.2,0.25,0.3"
 # The setting the quick run uses without sweeping (the full run's choice on this machine).
 VCM_DEFAULT="0.02 0.005 0.04"
 VCM_TIMEOUT=600 # seconds: VCM runs longer than this (large N) are skipped and reported so

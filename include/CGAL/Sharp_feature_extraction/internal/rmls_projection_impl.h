@@ -90,7 +90,7 @@ public:
       if(remaining < min_size)
         break;
       Rmls_surface surface;
-      if(!find_seed(tolerance, surface.members))
+      if(!find_seed(tolerance, degree, surface.members))
         break;
       grow(tolerance, degree, surface);
       if(surface.members.size() < min_size)
@@ -151,13 +151,16 @@ private:
   std::vector<std::pair<double, std::size_t>> m_ranked;
 
   // Least-residual seed: planes through small subsets around a few well spread centres.
-  bool find_seed(double tolerance, std::vector<std::size_t>& seed)
+  bool find_seed(double tolerance, int degree, std::vector<std::size_t>& seed)
   {
     m_free.clear();
     for(std::size_t i = 0; i < local.size(); ++i)
       if(!m_assigned[i])
         m_free.push_back(i);
-    const std::size_t size = (std::min)(C::seed_size, m_free.size());
+    // Smaller seeds when what is left may hold two small surfaces (near corners), but enough
+    // points to determine the fit.
+    const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : C::min_surface_points;
+    const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(C::seed_size, m_free.size() / 3)));
     // Farthest point sampling of the centres, starting from the free point nearest the candidate.
     m_centers.assign(1, m_free.front());
     m_distance.assign(m_free.size(), std::numeric_limits<double>::infinity());
@@ -185,7 +188,7 @@ private:
       Local_frame frame;
       Vec3 spread;
       Height_field plane;
-      if(!principal_frame(local, m_seed, frame, spread) || !plane.fit(local, m_seed, frame, 1))
+      if(!principal_frame(local, m_seed, frame, spread) || !plane.fit(local, m_seed, frame, degree))
         continue;
       double score = 0;
       for(std::size_t j : m_seed)
@@ -348,7 +351,7 @@ inline Projection project_candidate(Forward_search& search, const Vec3& p, std::
 {
   typedef Forward_search_constants C;
   Projection result;
-  search.run(scales.rmls_tolerance, 1);
+  search.run(scales.rmls_tolerance, surface_degree(scales, settings));
   std::vector<Rmls_surface>& surfaces = search.surfaces;
   const double radius = (search.local.back() - p).norm();
   const double cos_sharp = std::cos(radians(settings.sharpness_angle));
