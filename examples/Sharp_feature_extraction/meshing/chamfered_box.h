@@ -10,7 +10,10 @@
 
 #include "meshing/surface_mesh_checks.h"
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <array>
 #include <cmath>

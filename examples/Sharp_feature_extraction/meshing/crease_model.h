@@ -18,7 +18,10 @@
 
 #include "meshing/spatial_grid.h"
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <Eigen/Dense>
 
@@ -82,6 +85,18 @@ public:
     Vector_3 t;
     std::array<Side, 2> sides;
     std::size_t curve = 0;
+    /// Near the end of an open curve: the end and the tangent pointing out of the curve.
+    /// The two-surface model does not hold beyond the end (at a corner a third surface
+    /// takes over), so points on the far side of the plane through the end, normal to the
+    /// tangent, are not modelled.
+    bool near_end = false;
+    Point_3 end;
+    Vector_3 out;
+
+    bool is_beyond_end(const Point_3& x) const
+    {
+      return near_end && CGAL::to_double((x - end) * out) > 0;
+    }
   };
 
   /// fits the patches of every curve that has normals to `points` (curves without normals
@@ -163,6 +178,10 @@ public:
       return 0;
     }
     const Sample& s = m_samples[i];
+    if(s.is_beyond_end(x)) {
+      weight = 0;
+      return 0;
+    }
     const double d = std::sqrt(d2);
     const double r = (d - m_options.blend_inner) / (m_options.blend_outer - m_options.blend_inner);
     weight = r <= 0 ? 1. : (r >= 1 ? 0. : 1. - r * r * (3 - 2 * r));
@@ -219,6 +238,29 @@ private:
           m_samples.push_back(s);
         }
       }
+      mark_ends(curve, c);
+    }
+  }
+
+  /// flags the samples of `curve` (the last ones pushed) within `blend_outer` of an open end.
+  void mark_ends(const CGAL::Feature_polyline<GeomTraits>& curve, std::size_t c)
+  {
+    if(curve.points.front() == curve.points.back())
+      return;
+    const Point_3& front = curve.points.front();
+    const Point_3& back = curve.points.back();
+    const Vector_3 front_out = unit(curve.points[0] - curve.points[1]);
+    const Vector_3 back_out = unit(curve.points.back() - curve.points[curve.points.size() - 2]);
+    const double reach2 = CGAL::square(2 * m_options.blend_outer);
+    for(std::size_t i = m_samples.size(); i-- > 0 && m_samples[i].curve == c;) {
+      Sample& s = m_samples[i];
+      const double df = CGAL::to_double(CGAL::squared_distance(s.c, front));
+      const double db = CGAL::to_double(CGAL::squared_distance(s.c, back));
+      if((std::min)(df, db) > reach2)
+        continue;
+      s.near_end = true;
+      s.end = df < db ? front : back;
+      s.out = df < db ? front_out : back_out;
     }
   }
 
@@ -229,6 +271,8 @@ private:
   {
     std::array<std::vector<Vector_3>, 2> offsets;
     grid.for_each_within(s.c, m_options.fit_radius, [&](std::size_t i, double) {
+      if(s.is_beyond_end(points[i]))
+        return;
       const Vector_3 w = points[i] - s.c;
       const double r0 = std::abs(CGAL::to_double(w * s.sides[0].n));
       const double r1 = std::abs(CGAL::to_double(w * s.sides[1].n));
@@ -312,6 +356,8 @@ private:
     if(i == Spatial_grid<Point_3>::none)
       return nullptr;
     const Sample& s = m_samples[i];
+    if(s.is_beyond_end(p))
+      return nullptr;
     if(s.sides[0].support < minimum_support || s.sides[1].support < minimum_support)
       return nullptr;
     const double g0 = std::abs(signed_distance(s, 0, p)), g1 = std::abs(signed_distance(s, 1, p));

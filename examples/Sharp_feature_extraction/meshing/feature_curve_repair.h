@@ -12,7 +12,10 @@
 
 #include "meshing/spatial_grid.h"
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -376,6 +379,12 @@ std::vector<Close_run> find_close_runs(const std::vector<Curve>& curves, double 
       // vertices meeting exactly are already a junction
       if(curves[b.first].points[b.second] == pa)
         return;
+      // curves leaving a shared junction are close to each other near it: not a contact
+      const Point_3& pb = curves[b.first].points[b.second];
+      for(const Point_3* j : {&curves[a.first].points.front(), &curves[a.first].points.back()})
+        if((*j == curves[b.first].points.front() || *j == curves[b.first].points.back()) &&
+           point_distance(pa, *j) < 3 * tol && point_distance(pb, *j) < 3 * tol)
+          return;
       if(a.first == b.first && std::abs(arcs[a.first][a.second] - arcs[b.first][b.second]) < 4 * tol)
         return;
       contacts[std::make_pair(a.first, b.first)].push_back(

@@ -8,6 +8,8 @@
 #include "meshing/surface_mesh_checks.h"
 #include "utilities/png_image.h"
 
+#include <CGAL/number_utils.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

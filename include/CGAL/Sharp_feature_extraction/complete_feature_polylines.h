@@ -13,7 +13,7 @@ namespace CGAL {
 /// \ingroup PkgSharpFeatureExtractionRef
 /// Stage 5: completes the curve network in place (paper, section 3.5, end-point analysis).
 ///
-/// Free-ended polylines shorter than twice the growth radius are removed as noise. At each free
+/// Free-ended polylines shorter than 4 growth radii are removed as noise. At each free
 /// end, the outward tangent (principal direction of the last 4 vertices) defines a search cone of
 /// half-angle `maximum_angle`, up to the completion distance; the closest polyline vertex or
 /// corner inside it decides: (a) another end facing back: the gap is bridged (or a loop closed);

@@ -55,14 +55,12 @@ bool compute_candidate_points(
   const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits GT;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const sfe::Settings settings = sfe::read_settings(np);
-  const std::vector<sfe::Vec3> input = sfe::read_input_points(points, NP_helper::get_const_point_map(points, np));
-  sfe::Point_index index;
-  index.build<ConcurrencyTag>(input);
+  sfe::Indexed_input input;
+  sfe::index_input_points<ConcurrencyTag>(points, np, input);
   sfe::Candidate_output out;
-  const bool completed = sfe::compute_candidates<ConcurrencyTag>(input, index, settings,
+  const bool completed = sfe::compute_candidates<ConcurrencyTag>(input.points, input.index, settings,
                                                                  sfe::Progress(settings.callback), out);
   candidates.residuals.assign(out.residuals.begin(), out.residuals.end());
   candidates.indices = out.candidates;

@@ -32,19 +32,18 @@ namespace internal {
 /// Share of the progress range given to each stage (stage 1 and 2 dominate).
 constexpr double progress_end_of_stage[5] = {0.35, 0.9, 0.97, 0.99, 1.0};
 
-/// The five stages on `input`, one spatial index shared by stages 1 and 2.
+/// The five stages on `input`, whose spatial index serves stages 1 and 2. The time spent
+/// reading and indexing the input counts in stage 1.
 template <typename ConcurrencyTag, typename GT>
-bool run_pipeline(const std::vector<Vec3>& input, const Settings& settings, Sharp_features<GT>& result)
+bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_features<GT>& result)
 {
   result = Sharp_features<GT>();
   Progress progress(settings.callback);
   CGAL::Real_timer timer;
 
   timer.start();
-  Point_index index;
-  index.build<ConcurrencyTag>(input);
   Candidate_output candidates;
-  if(!compute_candidates<ConcurrencyTag>(input, index, settings, progress.sub(0, progress_end_of_stage[0]), candidates))
+  if(!compute_candidates<ConcurrencyTag>(input.points, input.index, settings, progress.sub(0, progress_end_of_stage[0]), candidates))
     return false;
   const Scales& scales = candidates.scales;
   result.candidates.residuals.assign(candidates.residuals.begin(), candidates.residuals.end());
@@ -54,7 +53,7 @@ bool run_pipeline(const std::vector<Vec3>& input, const Settings& settings, Shar
 
   timer.reset();
   Feature_samples features;
-  if(!rmls_project<ConcurrencyTag>(input, index, candidates.candidates, scales, settings,
+  if(!rmls_project<ConcurrencyTag>(input.points, input.index, candidates.candidates, scales, settings,
                                    progress.sub(progress_end_of_stage[0], progress_end_of_stage[1]), features))
     return false;
   result.projected = to_public<GT>(features, scales);
@@ -108,10 +107,15 @@ bool extract_sharp_features(const PointRange& points, Sharp_features<GeomTraits>
                             const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   const sfe::Settings settings = sfe::read_settings(np);
-  const std::vector<sfe::Vec3> input = sfe::read_input_points(points, NP_helper::get_const_point_map(points, np));
-  return sfe::run_pipeline<ConcurrencyTag>(input, settings, result);
+  CGAL::Real_timer indexing;
+  indexing.start();
+  sfe::Indexed_input input;
+  sfe::index_input_points<ConcurrencyTag>(points, np, input);
+  indexing.stop();
+  const bool completed = sfe::run_pipeline<ConcurrencyTag>(input, settings, result);
+  result.timings.candidates += indexing.time();
+  return completed;
 }
 
 /// \ingroup PkgSharpFeatureExtractionRef

@@ -44,18 +44,16 @@ bool rmls_project_candidates(
   const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits GT;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const sfe::Settings settings = sfe::read_settings(np);
-  const std::vector<sfe::Vec3> input = sfe::read_input_points(points, NP_helper::get_const_point_map(points, np));
+  sfe::Indexed_input input;
+  sfe::index_input_points<ConcurrencyTag>(points, np, input);
   for(std::size_t i : candidates.indices)
-    if(i >= input.size())
+    if(i >= input.points.size())
       throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
-  sfe::Point_index index;
-  index.build<ConcurrencyTag>(input);
   const sfe::Scales scales = sfe::to_internal(candidates.scales);
   sfe::Feature_samples out;
-  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, index, candidates.indices, scales, settings,
+  const bool completed = sfe::rmls_project<ConcurrencyTag>(input.points, input.index, candidates.indices, scales, settings,
                                                            sfe::Progress(settings.callback), out);
   projected = sfe::to_public<GT>(out, scales);
   return completed;

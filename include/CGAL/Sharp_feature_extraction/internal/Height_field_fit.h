@@ -100,6 +100,15 @@ public:
   bool fit(const std::vector<Vec3>& points, const IndexRange& indices, const Local_frame& reference,
            int degree)
   {
+    return fit(points, indices, reference, degree, Vec3::Zero(), 0.);
+  }
+
+  /// Same, weighted by exp(-|p - center|^2 / bandwidth^2) (moving least squares) when
+  /// `bandwidth` > 0.
+  template <typename IndexRange>
+  bool fit(const std::vector<Vec3>& points, const IndexRange& indices, const Local_frame& reference,
+           int degree, const Vec3& center, double bandwidth)
+  {
     frame = reference;
     std::size_t count = 0;
     double extent = 0;
@@ -117,13 +126,15 @@ public:
     Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
     Eigen::Matrix<double, 6, 1> row;
+    const double inverse_square_bandwidth = bandwidth > 0 ? 1. / (bandwidth * bandwidth) : 0.;
     for(std::size_t i : indices)
     {
       const Vec3 d = points[i] - frame.origin;
       const double X = d.dot(frame.u) / scale, Y = d.dot(frame.v) / scale;
+      const double w = bandwidth > 0 ? std::exp(-(points[i] - center).squaredNorm() * inverse_square_bandwidth) : 1.;
       row << 1, X, Y, X * X, X * Y, Y * Y;
-      normal_matrix.noalias() += row * row.transpose();
-      rhs.noalias() += row * d.dot(frame.n);
+      normal_matrix.noalias() += w * row * row.transpose();
+      rhs.noalias() += w * row * d.dot(frame.n);
     }
     // Ridge term relative to the matrix size: keeps nearly collinear neighbourhoods solvable,
     // and is negligible (1e-9 of the unit-scaled moments) on well spread ones.

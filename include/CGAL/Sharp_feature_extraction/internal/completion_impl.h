@@ -24,13 +24,13 @@ namespace internal {
 struct Completion_constants
 {
   /// Vertices used to estimate the tangent at an end.
-  static constexpr std::size_t tangent_vertices = 4;
+  static constexpr std::size_t tangent_vertices = 6;
   /// A curve turning by more than this angle (degrees) at a vertex is split there.
   static constexpr double sharp_turn_angle = 60;
   /// Laplacian step: the fraction of the way to the weighted average of the two neighbours.
   static constexpr double laplacian_step = 0.5;
   /// Free-ended curves shorter than this, relative to the growth radius, are noise.
-  static constexpr double min_length = 2;
+  static constexpr double min_length = 4;
   /// Passes over all ends; each pass stops at the first change.
   static constexpr std::size_t max_rounds = 10000;
 };
@@ -331,7 +331,7 @@ private:
   }
 
   // Corners with fewer than two curves are not corners; a corner with two curves that continue
-  // each other is not one either: merge through it.
+  // each other (turning by less than the sharp-turn angle) is not one either: merge through it.
   void clean_corners()
   {
     for(bool changed = true; changed;)
@@ -354,7 +354,8 @@ private:
             continue;
           // Tangents pointing out of the corner along each curve.
           const Vec3 t0 = -end_tangent(m_net.curves[c0], b0), t1 = -end_tangent(m_net.curves[c1], b1);
-          if(t0.dot(t1) > -m_cos_aperture)
+          // A valence-2 corner is kept only where the curve turns sharply (see split_sharp_turns).
+          if(t0.dot(t1) > -std::cos(radians(C::sharp_turn_angle)))
             continue;
           if(c0 == c1)
           {

@@ -10,6 +10,7 @@
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -54,6 +55,21 @@ std::vector<Vec3> read_input_points(const PointRange& points, PointMap point_map
     ++i;
   }
   return out;
+}
+
+/// The input points in double precision with their spatial index: what stages 1 and 2 search.
+struct Indexed_input
+{
+  std::vector<Vec3> points;
+  Point_index index;
+};
+
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
+void index_input_points(const PointRange& points, const NamedParameters& np, Indexed_input& out)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  out.points = read_input_points(points, NP_helper::get_const_point_map(points, np));
+  out.index.template build<ConcurrencyTag>(out.points);
 }
 
 template <typename FT>

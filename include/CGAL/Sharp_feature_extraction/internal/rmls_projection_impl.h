@@ -41,6 +41,9 @@ struct Forward_search_constants
   static constexpr std::size_t max_newton_steps = 50;
   static constexpr double newton_step_tolerance = 1e-4; // relative to the sampling spacing
   static constexpr std::size_t refinement_rounds = 3;
+  /// Gaussian weights of the refined fits, centred at the candidate (moving least squares):
+  /// bandwidth relative to the neighbourhood radius.
+  static constexpr double fit_bandwidth = 0.8;
 };
 
 /// One smooth surface found by the forward search.
@@ -109,7 +112,8 @@ public:
   /// best (if within the tolerance) and each surface is refitted. This undoes the greed of the
   /// forward search, where the first surface also takes the points of the next one that lie
   /// within the tolerance near the crease and is biased towards it.
-  void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds)
+  void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds,
+              const Vec3& center, double bandwidth)
   {
     for(std::size_t round = 0; round < rounds; ++round)
     {
@@ -133,7 +137,12 @@ public:
       }
       for(Rmls_surface* s : set)
         if(s->members.size() >= 3)
-          refit(s->members, degree, s->fit);
+        {
+          Local_frame frame;
+          Vec3 spread;
+          if(principal_frame(local, s->members, frame, spread))
+            s->fit.fit(local, s->members, frame, degree, center, bandwidth);
+        }
     }
     for(Rmls_surface* s : set)
     {
@@ -369,7 +378,8 @@ inline Projection project_candidate(Forward_search& search, const Vec3& p, std::
       distinct.push_back(&s);
   }
   if(distinct.size() >= 2)
-    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings), C::refinement_rounds);
+    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings), C::refinement_rounds,
+                  p, C::fit_bandwidth * radius);
   distinct.erase(std::remove_if(distinct.begin(), distinct.end(), [&](const Rmls_surface* s) {
                    return s->members.size() < C::min_surface_points; }), distinct.end());
   if(distinct.size() < 2)
