@@ -57,42 +57,43 @@ log() { printf '[bench %4ds] %s\n' "$((SECONDS - START_SECONDS))" "$*"; }
 
 # ------------------------------------------------------------------------------------------
 # Packages, meshes, build. scripts/common.sh (shared with demo.sh and test.sh) provides
-# install_missing_packages and fetch_cgal_mesh when present; the fallbacks below do the same.
+# install_missing_packages and fetch_cgal_mesh; the fallbacks below stand in when it is absent.
 # ------------------------------------------------------------------------------------------
 if [ -f "$ROOT/scripts/common.sh" ]; then
   # shellcheck source=/dev/null
   source "$ROOT/scripts/common.sh"
 fi
 
-BENCH_PACKAGES="cmake make g++ libcgal-dev libcgal-demo libeigen3-dev libboost-dev libtbb-dev \
+# libcgal-demo (CGAL's sample meshes) is not listed: fetch_cgal_mesh unpacks it into out/cache
+# when it is not installed.
+BENCH_PACKAGES="build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev \
 libgmp-dev libmpfr-dev python3 python3-matplotlib python3-numpy python3-pil"
-bench_install_packages() {
-  local missing=()
-  for p in $BENCH_PACKAGES; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-  done
-  if [ ${#missing[@]} -gt 0 ]; then
-    log "installing Debian packages: ${missing[*]}"
-    local sudo=""
+if ! declare -F install_missing_packages >/dev/null; then
+  install_missing_packages() { # fallback when scripts/common.sh is absent
+    local missing=() p sudo=""
+    for p in "$@"; do
+      dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
     [ "$(id -u)" = 0 ] || sudo="sudo"
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
-  fi
-}
-
-CGAL_DATA_ARCHIVE=/usr/share/doc/libcgal-dev/data.tar.gz
-bench_fetch_mesh() { # NAME -> $MESHES/NAME.off
-  local out="$MESHES/$1.off"
-  if [ ! -s "$out" ]; then
-    tar -xzf "$CGAL_DATA_ARCHIVE" -O "data/meshes/$1.off" > "$out.tmp"
-    mv "$out.tmp" "$out"
-  fi
-}
-
-bench_install_packages
-if declare -F install_missing_packages >/dev/null; then
-  install_missing_packages
+  }
 fi
+if ! declare -F fetch_cgal_mesh >/dev/null; then
+  fetch_cgal_mesh() { # fallback when scripts/common.sh is absent: needs libcgal-demo installed
+    local out="$ROOT/out/meshes/$1.off"
+    if [ ! -s "$out" ]; then
+      mkdir -p "$(dirname "$out")"
+      tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -O "data/meshes/$1.off" >"$out.part"
+      mv "$out.part" "$out"
+    fi
+    printf '%s\n' "$out"
+  }
+fi
+
+# shellcheck disable=SC2086
+install_missing_packages $BENCH_PACKAGES
 
 MESHES="$ROOT/out/meshes"
 mkdir -p "$MESHES"
@@ -119,9 +120,9 @@ OTHER_VARIANTS="denser5:0:0:5 outliers1:0:0.01:1 outliers5:0:0.05:1"
 # setting with the best mean point-F1 at eps 0.5% over the noise levels is used everywhere.
 SWEEP_R="0.01,0.02,0.04"
 SWEEP_r="0,0.005,0.01"
-SWEEP_THRESHOLD="0.02,0.04,0.06,0.08,0.12,0.16,0.2,0.25,0.3"
+SWEEP_THRESHOLD="0.02,0.04,0.06,0.08,0.12,0.16,0.2,0.25,0.3,0.35,0.4"
 # The setting the quick run uses without sweeping (the full run's choice on this machine).
-VCM_DEFAULT="0.02 0.005 0.04"
+VCM_DEFAULT="0.01 0.01 0.3"
 VCM_TIMEOUT=600 # seconds: VCM runs longer than this (large N) are skipped and reported so
 
 if [ "$QUICK" = 1 ]; then
@@ -172,8 +173,7 @@ run_row() { # FILE LABEL METHOD COMMAND...
 
 log "ground truth"
 for part in $PARTS $CONTROLS; do
-  if declare -F fetch_cgal_mesh >/dev/null; then fetch_cgal_mesh "$part" >/dev/null; fi
-  bench_fetch_mesh "$part"
+  [ -s "$MESHES/$part.off" ] || fetch_cgal_mesh "$part" >/dev/null
   "$BIN/sfe_ground_truth" --mesh "$MESHES/$part.off" --prefix "$DATA/truth/$part" \
     --angle "$(truth_angle "$part")" --label "$part" --output "$DATA/truth.jsonl" \
     --picture "$DATA/pictures/truth_$part.png"

@@ -330,7 +330,8 @@ int main(int argc, char* argv[])
     std::cout << points.size() << " points, spacing " << result.spacing << "\n";
     if(features)
       std::cout << "curves: " << result.repair.summary() << "; " << result.protected_curves
-                << " protected (" << result.protected_vertices << " protected vertices)\n";
+                << " protected (" << result.protected_vertices << " protected vertices), "
+                << result.projected_vertices << " curve vertices moved onto the fitted creases\n";
     for(const std::string& problem : result.curve_problems)
       std::cout << "  curve problem left: " << problem << "\n";
     std::cout << "normals: " << result.corrected_normals << " corrected near creases, "

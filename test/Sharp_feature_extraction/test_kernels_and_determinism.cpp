@@ -1,1 +1,251 @@
+// The pipeline is kernel-generic (Epick and Simple_cartesian<double> give the same curves),
+// deterministic (same output on two runs and with Sequential_tag or Parallel_tag, bit for bit),
+// reports monotone progress in [0, 1] and stops cleanly when the callback returns false, and
+// its output is ready for Mesh_3 (exactly shared corners, exactly closed loops, consistent
+// corner/curve incidences).
+
+#include "analytic_shapes.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/property_map.h>
+
 #include <catch2/catch.hpp>
+
+#include <utility>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+typedef CGAL::Simple_cartesian<double> Cartesian;
+using namespace sfe_test;
+
+constexpr std::size_t number_of_points = 20000;
+
+template <typename K>
+CGAL::Sharp_features<K> extract_with(const Shape& shape, double noise)
+{
+  const std::vector<typename K::Point_3> points = to_points<typename K::Point_3>(sample(shape, number_of_points, noise));
+  CGAL::Sharp_features<K> result;
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, result));
+  return result;
+}
+
+/// Bit-identical curve networks, possibly of different kernels.
+template <typename K1, typename K2>
+void check_identical(const CGAL::Feature_curve_network<K1>& a, const CGAL::Feature_curve_network<K2>& b)
+{
+  REQUIRE(a.polylines.size() == b.polylines.size());
+  REQUIRE(a.corners.size() == b.corners.size());
+  for(std::size_t c = 0; c < a.polylines.size(); ++c)
+  {
+    const auto& p = a.polylines[c];
+    const auto& q = b.polylines[c];
+    REQUIRE(p.points.size() == q.points.size());
+    CHECK(p.front_corner == q.front_corner);
+    CHECK(p.back_corner == q.back_corner);
+    bool same = true;
+    for(std::size_t i = 0; i < p.points.size(); ++i)
+    {
+      for(int k = 0; k < 3; ++k)
+        same = same && CGAL::to_double(p.points[i][k]) == CGAL::to_double(q.points[i][k])
+                    && CGAL::to_double(p.normals[i][0][k]) == CGAL::to_double(q.normals[i][0][k])
+                    && CGAL::to_double(p.normals[i][1][k]) == CGAL::to_double(q.normals[i][1][k]);
+    }
+    INFO("curve " << c);
+    CHECK(same);
+  }
+  for(std::size_t k = 0; k < a.corners.size(); ++k)
+  {
+    CHECK(to_vec(a.corners[k].point).x == to_vec(b.corners[k].point).x);
+    CHECK(to_vec(a.corners[k].point).y == to_vec(b.corners[k].point).y);
+    CHECK(to_vec(a.corners[k].point).z == to_vec(b.corners[k].point).z);
+    CHECK(a.corners[k].incident_polylines == b.corners[k].incident_polylines);
+  }
+}
+
+/// Records every progress value; returns false once `stop_at` is reached.
+struct Progress_recorder
+{
+  std::vector<double> values;
+  double stop_at = 2;  // never
+  bool called_after_stop = false;
+  bool stopped = false;
+  std::function<bool(double)> callback()
+  {
+    return [this](double p) {
+      if(stopped)
+        called_after_stop = true;
+      values.push_back(p);
+      stopped = p >= stop_at;
+      return !stopped;
+    };
+  }
+  bool monotone_in_unit_interval() const
+  {
+    for(std::size_t i = 0; i < values.size(); ++i)
+      if(!(values[i] >= 0 && values[i] <= 1) || (i > 0 && values[i] < values[i - 1]))
+        return false;
+    return true;
+  }
+};
+
+} // namespace
+
+TEST_CASE("Epick and Simple_cartesian<double> give the same curves", "[kernels]")
+{
+  for(const Shape& shape : {unit_cube(), capped_cylinder()})
+  {
+    INFO(shape.name);
+    const CGAL::Sharp_features<Epick> a = extract_with<Epick>(shape, 0);
+    const CGAL::Sharp_features<Cartesian> b = extract_with<Cartesian>(shape, 0);
+    CHECK(!a.network.polylines.empty());
+    check_identical(a.network, b.network);
+    CHECK(mesh_3_contract_violation(b.network) == "");
+    CHECK(result_is_finite(b));
+  }
+}
+
+TEST_CASE("points given through a point map give the same curves as plain points", "[kernels]")
+{
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), number_of_points, 0));
+  std::vector<std::pair<Epick::Point_3, int>> items;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    items.emplace_back(points[i], int(i));
+  CGAL::Sharp_features<Epick> plain, mapped;
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, plain));
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(
+    items, mapped, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Epick::Point_3, int>>())));
+  check_identical(plain.network, mapped.network);
+}
+
+TEST_CASE("two runs on the same cloud give bit-identical curves", "[determinism]")
+{
+  for(double noise : {0., 0.005})
+  {
+    INFO("noise " << noise);
+    const CGAL::Sharp_features<Epick> a = extract_with<Epick>(unit_cube(), noise);
+    const CGAL::Sharp_features<Epick> b = extract_with<Epick>(unit_cube(), noise);
+    check_identical(a.network, b.network);
+    CHECK(a.candidates.indices == b.candidates.indices);
+  }
+}
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST_CASE("Sequential_tag and Parallel_tag give bit-identical curves", "[determinism]")
+{
+  for(double noise : {0., 0.005})
+    for(const Shape& shape : {unit_cube(), capped_cylinder()})
+    {
+      INFO(shape.name << ", noise " << noise);
+      const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(shape, number_of_points, noise));
+      CGAL::Sharp_features<Epick> sequential, parallel;
+      REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, sequential));
+      REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_tag>(points, parallel));
+      CHECK(sequential.candidates.indices == parallel.candidates.indices);
+      CHECK(sequential.projected.edge_points.size() == parallel.projected.edge_points.size());
+      check_identical(sequential.network, parallel.network);
+    }
+}
+#endif
+
+TEST_CASE("the callback receives monotone progress in [0, 1] ending at 1", "[callback]")
+{
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), number_of_points, 0));
+  Progress_recorder recorder;
+  CGAL::Sharp_features<Epick> result;
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(
+    points, result, CGAL::parameters::callback(recorder.callback())));
+  REQUIRE(recorder.values.size() >= 5);
+  CHECK(recorder.monotone_in_unit_interval());
+  CHECK(recorder.values.back() == 1.);
+  // Progress is reported during the long stages, not only at their ends.
+  std::size_t before_half = 0;
+  for(double v : recorder.values)
+    before_half += v > 0 && v < 0.5;
+  CHECK(before_half >= 2);
+  // The callback does not change the result.
+  CGAL::Sharp_features<Epick> silent;
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(points, silent));
+  check_identical(result.network, silent.network);
+}
+
+TEST_CASE("a callback returning false cancels the extraction at any stage without failure", "[callback]")
+{
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), number_of_points, 0));
+  // Stop at the first report, then during stages 1, 2, 3 and 4 (see the progress split).
+  for(double stop_at : {0., 0.2, 0.5, 0.93, 0.98, 0.995})
+  {
+    INFO("stop at progress " << stop_at);
+    Progress_recorder recorder;
+    recorder.stop_at = stop_at;
+    CGAL::Sharp_features<Epick> result;
+    CHECK_FALSE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(
+      points, result, CGAL::parameters::callback(recorder.callback())));
+    CHECK(recorder.stopped);
+    CHECK_FALSE(recorder.called_after_stop);
+    CHECK(recorder.monotone_in_unit_interval());
+    CHECK(result_is_finite(result));
+
+    std::vector<std::vector<Epick::Point_3>> polylines;
+    Progress_recorder again;
+    again.stop_at = stop_at;
+    CHECK_FALSE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(
+      points, std::back_inserter(polylines), CGAL::parameters::callback(again.callback())));
+    CHECK(polylines.empty());
+  }
+}
+
+TEST_CASE("stage functions report progress and stop when the callback returns false", "[callback]")
+{
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), number_of_points, 0));
+  Progress_recorder recorder;
+  CGAL::Candidate_points<Epick> candidates;
+  REQUIRE(CGAL::compute_candidate_points<CGAL::Sequential_tag>(points, candidates,
+                                                               CGAL::parameters::callback(recorder.callback())));
+  CHECK(recorder.monotone_in_unit_interval());
+  CHECK(recorder.values.back() == 1.);
+
+  auto stop = [](double) { return false; };
+  CGAL::Candidate_points<Epick> stopped;
+  CHECK_FALSE(CGAL::compute_candidate_points<CGAL::Sequential_tag>(points, stopped, CGAL::parameters::callback(stop)));
+  CGAL::Feature_point_set<Epick> projected;
+  CHECK_FALSE(CGAL::rmls_project_candidates<CGAL::Sequential_tag>(points, candidates, projected,
+                                                                   CGAL::parameters::callback(stop)));
+  REQUIRE(CGAL::rmls_project_candidates<CGAL::Sequential_tag>(points, candidates, projected));
+  CGAL::Feature_point_set<Epick> smoothed = projected;
+  CHECK_FALSE(CGAL::smooth_feature_points<CGAL::Sequential_tag>(smoothed, CGAL::parameters::callback(stop)));
+  CGAL::Feature_curve_network<Epick> network;
+  CHECK_FALSE(CGAL::grow_feature_polylines(projected, network, CGAL::parameters::callback(stop)));
+}
+
+TEST_CASE("curves are Mesh_3-ready: loops repeat their first point, curves share exact corner points",
+          "[mesh_3]")
+{
+  for(const Shape& shape : {unit_cube(), stepped_box(), capped_cylinder()})
+  {
+    INFO(shape.name);
+    const CGAL::Sharp_features<Epick> r = extract_with<Epick>(shape, 0);
+    CHECK(mesh_3_contract_violation(r.network) == "");
+    CHECK(mesh_3_contract_violation(r.grown) == "");
+    for(const auto& p : r.network.polylines)
+    {
+      if(p.front_corner == CGAL::Feature_polyline<Epick>::no_corner && p.back_corner == CGAL::Feature_polyline<Epick>::no_corner
+         && distance(to_vec(p.points.front()), to_vec(p.points.back())) < r.network.scales.spacing)
+        CHECK(p.points.front() == p.points.back());  // a loop that closes geometrically closes exactly
+      if(p.is_closed())
+        CHECK(p.front_corner == p.back_corner);
+    }
+    // Ends that meet are the same point: no two distinct curve ends closer than a spacing.
+    CHECK(smallest_gap_between_distinct_ends(r.network) > r.network.scales.spacing);
+  }
+  const CGAL::Sharp_features<Epick> cylinder = extract_with<Epick>(capped_cylinder(), 0);
+  REQUIRE(cylinder.network.polylines.size() == 2);
+  for(const auto& p : cylinder.network.polylines)
+  {
+    CHECK(p.is_closed());
+    CHECK(p.points.front() == p.points.back());
+  }
+}

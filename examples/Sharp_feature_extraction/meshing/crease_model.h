@@ -74,7 +74,7 @@ public:
   struct Side
   {
     Vector_3 n, d;
-    std::array<double, 5> q{{0, 0, 0, 0, 0}}; // coefficients of u^2, uv, v^2, u, v
+    std::array<double, 6> q{{0, 0, 0, 0, 0, 0}}; // coefficients of u^2, uv, v^2, u, v, 1
     double rms = 0;                          // residual of the fit
     std::size_t support = 0;                 // number of points fitted
   };
@@ -129,6 +129,39 @@ public:
     if(s == nullptr)
       return false;
     normal = patch_normal(*s, side, p);
+    return true;
+  }
+
+  /// moves `p` (a point on or near a curve) onto the intersection of the two patches of the
+  /// nearest curve sample: the crease of the implicit surface. Returns false, leaving `p`, if
+  /// there is no usable sample, if the patches are nearly parallel (a fading crease), or if the
+  /// move would exceed `max_move`.
+  bool project_onto_crease(Point_3& p, double max_move) const
+  {
+    const std::size_t i = m_samples_grid.nearest_within(p, m_options.blend_outer);
+    if(i == Spatial_grid<Point_3>::none)
+      return false;
+    const Sample& s = m_samples[i];
+    if(s.sides[0].support < minimum_support || s.sides[1].support < minimum_support)
+      return false;
+    Point_3 x = p;
+    for(int iteration = 0; iteration < 20; ++iteration) {
+      // minimal step solving the linearised g0 = g1 = 0
+      const Vector_3 a = patch_gradient(s, 0, x), b = patch_gradient(s, 1, x);
+      const double g0 = signed_distance(s, 0, x), g1 = signed_distance(s, 1, x);
+      const double aa = CGAL::to_double(a * a), ab = CGAL::to_double(a * b), bb = CGAL::to_double(b * b);
+      const double det = aa * bb - ab * ab;
+      if(det < 1e-4 * aa * bb) // normals within about half a degree
+        return false;
+      const double la = (-g0 * bb + g1 * ab) / det, lb = (-g1 * aa + g0 * ab) / det;
+      const Vector_3 step = la * a + lb * b;
+      x = x + step;
+      if(CGAL::to_double(step.squared_length()) < CGAL::square(1e-6 * m_options.sample_step))
+        break;
+    }
+    if(CGAL::to_double(CGAL::squared_distance(x, p)) > CGAL::square(max_move))
+      return false;
+    p = x;
     return true;
   }
 
@@ -196,8 +229,8 @@ public:
     const Vector_3 w = x - s.c;
     const double u = CGAL::to_double(w * s.t), v = CGAL::to_double(w * side.d);
     const double h = CGAL::to_double(w * side.n);
-    const std::array<double, 5>& q = side.q;
-    return h - (q[0] * u * u + q[1] * u * v + q[2] * v * v + q[3] * u + q[4] * v);
+    const std::array<double, 6>& q = side.q;
+    return h - (q[0] * u * u + q[1] * u * v + q[2] * v * v + q[3] * u + q[4] * v + q[5]);
   }
 
 private:
@@ -314,34 +347,34 @@ private:
   static double height_residual(const Vector_3& t, const Side& side, const Vector_3& w)
   {
     const double u = CGAL::to_double(w * t), v = CGAL::to_double(w * side.d);
-    const std::array<double, 5>& q = side.q;
-    return CGAL::to_double(w * side.n) - (q[0] * u * u + q[1] * u * v + q[2] * v * v + q[3] * u + q[4] * v);
+    const std::array<double, 6>& q = side.q;
+    return CGAL::to_double(w * side.n) - (q[0] * u * u + q[1] * u * v + q[2] * v * v + q[3] * u + q[4] * v + q[5]);
   }
 
-  /// least-squares quadric through the sample point (no constant term: the crease point lies
-  /// on both patches, so the protected curve lies on the implicit surface).
+  /// least-squares quadric height field over the side's frame. The constant term is free: the
+  /// curve point need not lie on the true crease; `project_onto_crease()` then moves it there.
   static void fit_side(const Vector_3& t, Side& side, const std::vector<Vector_3>& offsets)
   {
-    side.q = {{0, 0, 0, 0, 0}};
+    side.q = {{0, 0, 0, 0, 0, 0}};
     side.support = offsets.size();
     if(offsets.size() < minimum_support) {
       side.rms = 0;
       return;
     }
-    Eigen::Matrix<double, 5, 5> normal_matrix = Eigen::Matrix<double, 5, 5>::Zero();
-    Eigen::Matrix<double, 5, 1> rhs = Eigen::Matrix<double, 5, 1>::Zero();
+    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
     for(const Vector_3& w : offsets) {
       const double u = CGAL::to_double(w * t), v = CGAL::to_double(w * side.d);
       const double h = CGAL::to_double(w * side.n);
-      Eigen::Matrix<double, 5, 1> row;
-      row << u * u, u * v, v * v, u, v;
+      Eigen::Matrix<double, 6, 1> row;
+      row << u * u, u * v, v * v, u, v, 1;
       normal_matrix += row * row.transpose();
       rhs += h * row;
     }
-    const Eigen::Matrix<double, 5, 1> x = normal_matrix.ldlt().solve(rhs);
+    const Eigen::Matrix<double, 6, 1> x = normal_matrix.ldlt().solve(rhs);
     if(!x.allFinite())
       return;
-    for(int i = 0; i < 5; ++i)
+    for(int i = 0; i < 6; ++i)
       side.q[i] = x(i);
     double sum = 0;
     for(const Vector_3& w : offsets)
@@ -371,16 +404,22 @@ private:
 
   static Vector_3 patch_normal(const Sample& s, int k, const Point_3& p)
   {
+    return unit(patch_gradient(s, k, p));
+  }
+
+  /// gradient of `signed_distance(s, k, .)` at `p`.
+  static Vector_3 patch_gradient(const Sample& s, int k, const Point_3& p)
+  {
     const Side& side = s.sides[k];
     const Vector_3 w = p - s.c;
     const double u = CGAL::to_double(w * s.t), v = CGAL::to_double(w * side.d);
-    const std::array<double, 5>& q = side.q;
+    const std::array<double, 6>& q = side.q;
     const double dq_du = 2 * q[0] * u + q[1] * v + q[3];
     const double dq_dv = q[1] * u + 2 * q[2] * v + q[4];
-    return unit(side.n - dq_du * s.t - dq_dv * side.d);
+    return side.n - dq_du * s.t - dq_dv * side.d;
   }
 
-  // a quadric has 5 coefficients; ask for twice as many points
+  // a quadric has 6 coefficients; ask for about twice as many points
   static constexpr std::size_t minimum_support = 10;
 
   Crease_model_options m_options;

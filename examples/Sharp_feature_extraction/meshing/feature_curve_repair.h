@@ -379,11 +379,12 @@ std::vector<Close_run> find_close_runs(const std::vector<Curve>& curves, double 
       // vertices meeting exactly are already a junction
       if(curves[b.first].points[b.second] == pa)
         return;
-      // curves leaving a shared junction are close to each other near it: not a contact
+      // curves leaving a shared junction are close to each other near it, for a while if
+      // they leave at an acute angle (10 tolerances: down to about 6 degrees): not a contact
       const Point_3& pb = curves[b.first].points[b.second];
       for(const Point_3* j : {&curves[a.first].points.front(), &curves[a.first].points.back()})
         if((*j == curves[b.first].points.front() || *j == curves[b.first].points.back()) &&
-           point_distance(pa, *j) < 3 * tol && point_distance(pb, *j) < 3 * tol)
+           point_distance(pa, *j) < 10 * tol && point_distance(pb, *j) < 10 * tol)
           return;
       if(a.first == b.first && std::abs(arcs[a.first][a.second] - arcs[b.first][b.second]) < 4 * tol)
         return;
@@ -564,8 +565,9 @@ Curve_repair_report repair_feature_curves_for_mesh_3(
     report.closed_loops = closed_after - closed_before;
     drop_parallel_duplicates<Curve, Point_3>(curves, tol, report);
     split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
-    resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
+    // sharp turns first: the two legs of an acute turn are close, but they are not a contact
     split_sharp_turns(curves, tol, options.sharp_turn_angle, report);
+    resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
   }
 
   // snapping may have created zero-length pieces or duplicated points

@@ -19,6 +19,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -49,6 +50,7 @@ const char* usage =
   "  --samples N             samples of MESH for the distances (200000)\n"
   "  --points N --noise F --seed S   sampling: count, noise ball radius (fraction of dB), seed\n"
   "  --width PIXELS          picture width (800; height 600)\n"
+  "  --worst N               also list the N vertices of MESH farthest from the truth\n"
   "  --help\n";
 
 [[noreturn]] void fail(const std::string& message)
@@ -202,6 +204,7 @@ int main(int argc, char* argv[])
   double noise = 0;
   unsigned seed = 1;
   int width = 800;
+  std::size_t worst = 0;
   for(int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -225,6 +228,7 @@ int main(int argc, char* argv[])
     else if(arg == "--noise") noise = parse_number(arg, value());
     else if(arg == "--seed") seed = static_cast<unsigned>(parse_number(arg, value()));
     else if(arg == "--width") width = static_cast<int>(parse_number(arg, value()));
+    else if(arg == "--worst") worst = static_cast<std::size_t>(parse_number(arg, value()));
     else fail("unknown argument " + arg + " (see --help)");
   }
   if(truth_path.empty())
@@ -275,6 +279,14 @@ int main(int argc, char* argv[])
               << "\ncrease_reached_angle=" << q.crease_reached_angle
               << "\ncrease_angle_error=" << q.crease_angle_error << "\ncrease_within_10=" << q.crease_within_10
               << "\ncrease_samples=" << q.crease_samples << "\ntrue_creases=" << truth.creases().size() << "\n";
+    if(worst > 0) {
+      std::vector<std::pair<double, std::size_t>> d;
+      for(std::size_t v = 0; v < points.size(); ++v)
+        d.push_back(std::make_pair(std::sqrt(truth.tree().squared_distance(points[v])) / truth.diagonal(), v));
+      std::sort(d.rbegin(), d.rend());
+      for(std::size_t i = 0; i < (std::min)(worst, d.size()); ++i)
+        std::cout << "worst=" << points[d[i].second] << " " << d[i].first << "\n";
+    }
   }
   if(!render_prefix.empty()) {
     write_png(render_prefix + "_full.png", points, triangles, full_view(truth_points), width);

@@ -3,7 +3,8 @@
 // The pipeline of `mesh_with_sharp_features`, kept in a header so that the test runs exactly
 // the same code:
 //   1. sampling spacing s of the cloud (it sets every size below);
-//   2. repair of the curves for Mesh_3 (feature_curve_repair.h);
+//   2. repair of the curves for Mesh_3 (feature_curve_repair.h), then their interior vertices
+//      moved onto the crease of the two surfaces fitted on either side (crease_model.h);
 //   3. normals: jet estimation, MST orientation, then, near the curves, the normal of the
 //      point's own side of the crease (crease_model.h);
 //   4. Poisson implicit function from the oriented points, sharpened near the curves;
@@ -76,6 +77,7 @@ struct Point_cloud_meshing_result
   std::vector<std::string> curve_problems; ///< what is still wrong after the repair
   std::size_t protected_curves = 0, protected_vertices = 0;
   std::size_t corrected_normals = 0, unoriented_points = 0;
+  std::size_t projected_vertices = 0; ///< curve vertices moved onto the fitted crease
   double seconds_normals = 0, seconds_poisson = 0, seconds_meshing = 0;
 };
 
@@ -186,6 +188,14 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   Crease_model<GeomTraits> creases(options.correct_normals || options.sharpen_creases
                                      ? curves : std::vector<CGAL::Feature_polyline<GeomTraits>>(),
                                    points, model_options);
+  // the curves onto the crease of the fitted patches (ends stay: they may be shared)
+  if(options.sharpen_creases) {
+    for(auto& c : curves)
+      if(c.normals.size() == c.points.size())
+        for(std::size_t i = 1; i + 1 < c.points.size(); ++i)
+          if(creases.project_onto_crease(c.points[i], s))
+            ++result.projected_vertices;
+  }
   if(options.correct_normals) {
     for(Point_with_normal& p : pwn) {
       Vector_3 n;

@@ -45,6 +45,7 @@ struct Sharp_feature_scales
 template <typename GeomTraits>
 struct Candidate_points
 {
+  /// The number type of the kernel.
   typedef typename GeomTraits::FT FT;
   /// Residual r(p) of every input point, in input order: the largest distance, along the
   /// fit normal, from a neighbour of p to the jet fitted to p's neighbourhood.
@@ -62,7 +63,9 @@ struct Candidate_points
 template <typename GeomTraits>
 struct Edge_point
 {
+  /// The point on the crease.
   typename GeomTraits::Point_3 point;
+  /// Unit normals of the two surfaces at `point`, each oriented away from the other surface.
   std::array<typename GeomTraits::Vector_3, 2> normals;
   /// Index of the input point this edge point was projected from.
   std::size_t source = 0;
@@ -73,7 +76,9 @@ struct Edge_point
 template <typename GeomTraits>
 struct Corner_point
 {
+  /// The common point of the three surfaces.
   typename GeomTraits::Point_3 point;
+  /// Unit normals of the three surfaces at `point`, each oriented away from the other two.
   std::array<typename GeomTraits::Vector_3, 3> normals;
   /// Confidence 1/|c - e|, where e is the edge projection of the same candidate.
   typename GeomTraits::FT weight = 0;
@@ -86,7 +91,9 @@ struct Corner_point
 template <typename GeomTraits>
 struct Feature_point_set
 {
+  /// Points on the intersection of two surfaces, with both normals.
   std::vector<Edge_point<GeomTraits>> edge_points;
+  /// Points where three surfaces meet: one per corner, after grouping (stage 2).
   std::vector<Corner_point<GeomTraits>> corner_points;
   /// The scales the stages were run with.
   Sharp_feature_scales<typename GeomTraits::FT> scales;
@@ -99,15 +106,20 @@ struct Feature_point_set
 template <typename GeomTraits>
 struct Feature_polyline
 {
+  /// Value of `front_corner` and `back_corner` for an end that is not at a corner.
   static constexpr std::size_t no_corner = (std::numeric_limits<std::size_t>::max)();
 
+  /// The vertices, in order along the curve.
   std::vector<typename GeomTraits::Point_3> points;
+  /// The normals of the two surfaces at each vertex: `normals[i]` belongs to `points[i]`.
   std::vector<std::array<typename GeomTraits::Vector_3, 2>> normals;
   /// Index (into `Feature_curve_network::corners`) of the corner the curve starts at, or `no_corner`.
   std::size_t front_corner = no_corner;
   /// Index of the corner the curve ends at, or `no_corner`.
   std::size_t back_corner = no_corner;
 
+  /// `true` if the last point repeats the first exactly: a closed loop (which may start and
+  /// end at a corner).
   bool is_closed() const { return points.size() > 2 && points.front() == points.back(); }
 };
 
@@ -116,9 +128,10 @@ struct Feature_polyline
 template <typename GeomTraits>
 struct Feature_corner
 {
+  /// The corner point, exactly equal to the end point of every incident curve.
   typename GeomTraits::Point_3 point;
-  /// Normals of the surfaces meeting at the corner (three when it came from a corner point,
-  /// otherwise gathered from the incident curves).
+  /// Normals of the surfaces meeting at the corner: three when it came from a corner point,
+  /// otherwise the two normals of the curve vertex where completion created it.
   std::vector<typename GeomTraits::Vector_3> normals;
   /// Indices (into `Feature_curve_network::polylines`) of the curves that start or end here.
   std::vector<std::size_t> incident_polylines;
@@ -129,8 +142,12 @@ struct Feature_corner
 template <typename GeomTraits>
 struct Feature_curve_network
 {
+  /// The curves.
   std::vector<Feature_polyline<GeomTraits>> polylines;
+  /// The corners. Before completion (stage 4), every corner point of stage 2; after completion,
+  /// only the corners where curves end.
   std::vector<Feature_corner<GeomTraits>> corners;
+  /// The scales the curves were computed with.
   Sharp_feature_scales<typename GeomTraits::FT> scales;
 };
 
@@ -138,7 +155,17 @@ struct Feature_curve_network
 /// Wall-clock time of each stage, in seconds.
 struct Sharp_feature_timings
 {
-  double candidates = 0, projection = 0, smoothing = 0, growing = 0, completion = 0;
+  /// Stage 1, including reading and indexing the input points.
+  double candidates = 0;
+  /// Stage 2.
+  double projection = 0;
+  /// Stage 3.
+  double smoothing = 0;
+  /// Stage 4.
+  double growing = 0;
+  /// Stage 5.
+  double completion = 0;
+  /// The sum of the five stages.
   double total() const { return candidates + projection + smoothing + growing + completion; }
 };
 
@@ -158,6 +185,7 @@ struct Sharp_features
   Feature_point_set<GeomTraits> smoothed;
   /// Stage 4: polylines before completion.
   Feature_curve_network<GeomTraits> grown;
+  /// Wall-clock time of each stage.
   Sharp_feature_timings timings;
 };
 

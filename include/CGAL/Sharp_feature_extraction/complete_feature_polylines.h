@@ -14,15 +14,18 @@ namespace CGAL {
 /// Stage 5: completes the curve network in place (paper, section 3.5, end-point analysis).
 ///
 /// Free-ended polylines shorter than 4 growth radii are removed as noise. At each free
-/// end, the outward tangent (principal direction of the last 4 vertices) defines a search cone of
+/// end, the outward tangent (principal direction of the last 6 vertices) defines a search cone of
 /// half-angle `maximum_angle`, up to the completion distance; the closest polyline vertex or
 /// corner inside it decides: (a) another end facing back: the gap is bridged (or a loop closed);
-/// (b) an interior vertex: that polyline is split there and a corner is created; an end at an
-/// angle or an existing corner: the ends meet at a corner; (c) nothing: a dissipating feature end
-/// is left as it is. Corners with fewer than two curves are removed; a corner between two curves
-/// that continue each other is merged through. A curve turning by more than 60 degrees at a vertex
-/// is split there (Mesh_3 would round such a turn off). Finally 1-2 passes of Laplacian smoothing
-/// with inverse-distance weights move interior vertices, ends fixed.
+/// (b) an interior vertex: that polyline is split there and a corner is created; an existing
+/// corner: the end joins it; another end at an angle: a corner the projection missed, created
+/// where the tangents of all the free ends converging there cross (least squares); (c) nothing:
+/// a dissipating feature end is left as it is. Free ends left over whose tangent rays still cross
+/// within the completion distance are joined the same way. Corners with fewer than two curves are
+/// removed; a corner between two curves that continue each other (turning by less than 60
+/// degrees) is merged through. A curve turning by more than 60 degrees at a vertex
+/// is split there (Mesh_3 would round such a turn off). Finally `number_of_relaxation_steps`
+/// passes of Laplacian smoothing with inverse-distance weights move interior vertices, ends fixed.
 ///
 /// Guarantees: curves that meet at a corner share the exact corner point; closed loops repeat
 /// their first point exactly; normals are consistent in order and orientation along each curve.

@@ -22,7 +22,7 @@ namespace CGAL {
 /// This stage also derives every scale of the pipeline from the data (see `Sharp_feature_scales`):
 /// the spacing s (mean distance to the 6th neighbour), the noise (median RMS residual of 36-point
 /// jets), the neighbourhood sizes (36 points, grown quadratically with noise/s above 0.25, at
-/// most 400; stage 2 uses twice as many), the RMLS tolerance (3 x noise, at least 0.05 s), the
+/// most 400; stage 2 uses twice as many), the RMLS tolerance (2.25 x noise, at least 0.05 s), the
 /// corner radius (median radius of a stage-2 neighbourhood), the growth radius (median radius of
 /// a stage-1 neighbourhood) and the completion distance (max(7 s, 3 x growth radius)).
 ///
@@ -40,9 +40,13 @@ namespace CGAL {
 ///   \cgalParamNBegin{callback} a `std::function<bool(double)>` called with the progress in [0,1];
 ///     returning `false` stops the computation. \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors} stage-1 neighbourhood size; default: derived. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors},
-///     `rmls_tolerance`, `corner_radius`, `growth_radius`, `completion_distance`: override the
-///     corresponding scale (see `Sharp_feature_scales`); default: derived. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors} stage-2 neighbourhood size; default: twice the stage-1 size. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance} RMLS tolerance (a distance); default: derived. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius} corner grouping radius; default: derived. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius} polyline growing radius; default: derived. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance} largest gap bridged by completion; default: derived.
+///     These five only set the scales stored in `candidates.scales` for the later stages
+///     (see `Sharp_feature_scales`). \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns `false` if the callback interrupted the computation (then `candidates` is incomplete).

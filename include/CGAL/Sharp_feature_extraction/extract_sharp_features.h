@@ -100,7 +100,9 @@ bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_fe
 /// \param np any named parameter of the five stage functions.
 /// \returns `false` if the `callback` interrupted the computation (the result is then partial).
 /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
-///   A cloud with fewer than 20 points, or whose points are all identical, yields no curves.
+///
+/// A cloud with fewer than 20 points, or whose points are all identical, yields no curves (and
+/// the function returns `true`).
 template <typename ConcurrencyTag, typename PointRange, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
 bool extract_sharp_features(const PointRange& points, Sharp_features<GeomTraits>& result,

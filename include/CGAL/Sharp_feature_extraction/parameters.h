@@ -41,7 +41,7 @@ CGAL_SFE_NAMED_PARAMETER(candidate_neighbors)
 /// Number of points in a stage-2 (RMLS) neighbourhood. Default: twice `candidate_neighbors`.
 CGAL_SFE_NAMED_PARAMETER(rmls_neighbors)
 /// Largest residual (a distance) of a point belonging to one smooth surface in the forward
-/// search. Default: 3 times the noise scale, at least 5% of the sampling spacing.
+/// search. Default: 2.25 times the noise scale, at least 5% of the sampling spacing.
 CGAL_SFE_NAMED_PARAMETER(rmls_tolerance)
 /// Corner points closer than this distance are grouped into one corner.
 /// Default: the median radius of the stage-2 neighbourhoods.

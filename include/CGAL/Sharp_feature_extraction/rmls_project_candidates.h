@@ -22,7 +22,8 @@ namespace CGAL {
 /// surface split by noise. With one surface the candidate is dropped; with two, a Newton-like
 /// iteration projects it onto their intersection (an edge point with both normals); with three,
 /// also onto the common point of the three (a corner point). Corner points within the corner
-/// radius are grouped, keeping the one closest to the weighted average (weights 1/|c - e|).
+/// radius are grouped, keeping the one closest to the weighted average (weights 1/|c - e|);
+/// groups of fewer than 3 corner points are dropped.
 ///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices and scales are used.

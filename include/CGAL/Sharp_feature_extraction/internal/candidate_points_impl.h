@@ -29,6 +29,9 @@ constexpr std::size_t base_candidate_neighbors = 36;
 constexpr std::size_t maximum_candidate_neighbors = 400;
 /// Noise-to-spacing ratio above which neighbourhoods grow (quadratically with the ratio).
 constexpr double noise_ratio_for_growth = 0.25;
+/// Noise-to-spacing ratio above which the surfaces of stage 2 are planes: a quadric fitted to
+/// noisy points bends towards the other side of a crease.
+constexpr double noise_ratio_for_planes = 0.05;
 /// RMLS tolerance relative to the noise scale (the RMS residual underestimates the noise a little:
 /// 2.25 of it covers uniform noise in a ball, whose normal component reaches 2.2 of its RMS).
 constexpr double rmls_tolerance_per_noise = 2.25;

@@ -33,6 +33,9 @@ struct Completion_constants
   static constexpr double min_length = 4;
   /// Passes over all ends; each pass stops at the first change.
   static constexpr std::size_t max_rounds = 10000;
+  /// Smallest eigenvalue of the junction system (a sum of projectors): below it the tangents
+  /// are too close to parallel to define where they cross.
+  static constexpr double junction_conditioning = 0.05;
 };
 
 inline double curve_length(const Curve& c)
@@ -114,6 +117,7 @@ public:
       if(!changed)
         break;
     }
+    join_converging_ends();
     clean_corners();
     split_sharp_turns();
     for(unsigned int pass = 0; pass < m_settings.laplacian_passes; ++pass)
@@ -264,7 +268,9 @@ private:
           merge_ends(c, back, target.curve, other_back);
         return true;
       }
-      // Two ends meeting at an angle: a corner the growing missed.
+      // Two ends meeting at an angle: a corner the projection missed, where their tangents cross.
+      if(create_junction(Free_end{c, back, end, tangent}, Free_end{target.curve, other_back, other.points[target.vertex], other_tangent}))
+        return true;
       const std::size_t corner = add_corner(other.points[target.vertex], other.normals[target.vertex]);
       (other_back ? other.back_corner : other.front_corner) = corner;
       attach_to_corner(c, back, corner);
@@ -275,6 +281,116 @@ private:
     split_at(target.curve, target.vertex, corner);
     attach_to_corner(c, back, corner);
     return true;
+  }
+
+  struct Free_end
+  {
+    std::size_t curve;
+    bool back;
+    Vec3 point, tangent;
+  };
+
+  std::vector<Free_end> free_ends() const
+  {
+    std::vector<Free_end> ends;
+    for(std::size_t c = 0; c < m_net.curves.size(); ++c)
+      for(bool back : {false, true})
+        if(is_free_end(c, back))
+        {
+          const Curve& curve = m_net.curves[c];
+          ends.push_back(Free_end{c, back, back ? curve.points.back() : curve.points.front(), end_tangent(curve, back)});
+        }
+    return ends;
+  }
+
+  // The point closest, in the least-squares sense, to the tangent lines of `ends`.
+  static bool junction_point(const std::vector<Free_end>& ends, Vec3& x)
+  {
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Vec3 b = Vec3::Zero();
+    for(const Free_end& e : ends)
+    {
+      const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - e.tangent * e.tangent.transpose();
+      a += projector;
+      b += projector * e.point;
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
+    if(solver.eigenvalues()[0] < C::junction_conditioning)
+      return false;
+    x = a.ldlt().solve(b);
+    return x.allFinite();
+  }
+
+  // Whether the ray of end `e` reaches `x`: ahead (or barely behind), within the completion
+  // distance, and inside the search cone or a growth radius of the ray.
+  bool ray_reaches(const Free_end& e, const Vec3& x) const
+  {
+    const Vec3 d = x - e.point;
+    const double along = d.dot(e.tangent);
+    if(along < -m_scales.growth_radius || along > m_scales.completion_distance)
+      return false;
+    const double off = (d - along * e.tangent).norm();
+    return off <= (std::max)(m_scales.growth_radius, std::tan(radians(m_settings.completion_aperture)) * along);
+  }
+
+  // Creates a corner where the rays of `a`, `b` and every other free end reaching the same point
+  // cross, and attaches all of them. Returns false if the rays of `a` and `b` do not meet.
+  bool create_junction(const Free_end& a, const Free_end& b)
+  {
+    std::vector<Free_end> group = {a, b};
+    Vec3 x;
+    if(!junction_point(group, x) || !ray_reaches(a, x) || !ray_reaches(b, x))
+      return false;
+    for(const Free_end& e : free_ends())
+      if(!(e.curve == a.curve && e.back == a.back) && !(e.curve == b.curve && e.back == b.back) && ray_reaches(e, x))
+        group.push_back(e);
+    if(group.size() > 2 && !junction_point(group, x))
+      return false;
+    Corner_node node{x, {}};
+    for(const Free_end& e : group)
+    {
+      const Curve& curve = m_net.curves[e.curve];
+      const std::array<Vec3, 2>& n = e.back ? curve.normals.back() : curve.normals.front();
+      node.normals.push_back(n[0]);
+      node.normals.push_back(n[1]);
+    }
+    m_net.corners.push_back(node);
+    for(const Free_end& e : group)
+      attach_to_corner(e.curve, e.back, m_net.corners.size() - 1);
+    return true;
+  }
+
+  // Free ends left after the end analysis may still converge on a corner that none of them
+  // sees inside its cone (e.g. each 45 degrees off the other's tangent): join the closest pairs.
+  void join_converging_ends()
+  {
+    const double cos_aperture = m_cos_aperture;
+    for(bool joined = true; joined;)
+    {
+      joined = false;
+      const std::vector<Free_end> ends = free_ends();
+      double best_cost = std::numeric_limits<double>::infinity();
+      std::size_t best_i = 0, best_j = 0;
+      for(std::size_t i = 0; i < ends.size(); ++i)
+        for(std::size_t j = i + 1; j < ends.size(); ++j)
+        {
+          const double cos_between = ends[i].tangent.dot(ends[j].tangent);
+          if(cos_between > cos_aperture || cos_between < -cos_aperture)
+            continue; // same direction, or facing each other (a gap, not a corner)
+          Vec3 x;
+          if(!junction_point({ends[i], ends[j]}, x) || !ray_reaches(ends[i], x) || !ray_reaches(ends[j], x))
+            continue;
+          const double cost = (x - ends[i].point).norm() + (x - ends[j].point).norm();
+          if(cost < best_cost)
+          {
+            best_cost = cost;
+            best_i = i;
+            best_j = j;
+          }
+        }
+      if(best_cost < std::numeric_limits<double>::infinity())
+        joined = create_junction(ends[best_i], ends[best_j]);
+    }
   }
 
   void merge_ends(std::size_t c, bool back, std::size_t d, bool other_back)

@@ -351,7 +351,7 @@ inline double distance_to_members(const Forward_search& search, const Rmls_surfa
 /// the sampling (a quadric then fits the noise and bends across the crease).
 inline int surface_degree(const Scales& scales, const Settings& settings)
 {
-  return scales.noise > noise_ratio_for_growth * scales.spacing ? 1 : settings.degree_fitting;
+  return scales.noise > noise_ratio_for_planes * scales.spacing ? 1 : settings.degree_fitting;
 }
 
 /// The RMLS projection of one candidate whose neighbourhood is in `search.local`.
