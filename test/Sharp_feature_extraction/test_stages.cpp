@@ -411,7 +411,7 @@ void check_joined_at_origin(const CGAL::Feature_curve_network<K>& net, std::size
 }
 
 TEST_CASE("stage 5: two curve ends meeting at a right angle get a corner where their lines cross",
-          "[stages][completion][!mayfail]")
+          "[stages][completion]")
 {
   // The y end is inside the search cone of the x end (18 degrees off its tangent).
   CGAL::Feature_curve_network<K> net = ends_around_missed_corner({{3 * curve_step, curve_step, 0}}, false);
@@ -420,7 +420,7 @@ TEST_CASE("stage 5: two curve ends meeting at a right angle get a corner where t
 }
 
 TEST_CASE("stage 5: two curve ends stopping equally short of a right-angle corner are joined there",
-          "[stages][completion][!mayfail]")
+          "[stages][completion]")
 {
   // Each end sees the other 45 degrees off its tangent: only the crossing of the tangent lines,
   // 2 steps ahead of both, reveals the corner.
@@ -430,7 +430,7 @@ TEST_CASE("stage 5: two curve ends stopping equally short of a right-angle corne
 }
 
 TEST_CASE("stage 5: three curve ends converging on a missed cube corner are joined at one corner of valence 3",
-          "[stages][completion][!mayfail]")
+          "[stages][completion]")
 {
   // What stage 4 leaves on a cube when stage 2 finds no corner point at one corner.
   CGAL::Feature_curve_network<K> net = ends_around_missed_corner({{curve_step, 2 * curve_step, 3 * curve_step}}, true);
