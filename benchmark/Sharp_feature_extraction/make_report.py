@@ -532,7 +532,7 @@ def write_report(data, report, quick):
       "was allocated before it (a second pass that runs the five stage functions one after another). "
       "Peak RSS: whole process (cloud, ground truth and scoring included).")
     if vcm_status:
-        w(" VCM: " + ", ".join(f"{n:,} points {s}" for n, s in sorted(vcm_status.items())) +
+        w("\nVCM: " + ", ".join(f"{n:,} points {s}" for n, s in sorted(vcm_status.items())) +
           " (a VCM run is stopped after 10 minutes and larger sizes are then skipped).")
     w("\n")
     if s_ours:

@@ -70,7 +70,8 @@ const char* usage =
   "  --spacing S            sampling spacing (default: mean distance to the 6th neighbour)\n"
   "  --facet-size X         Mesh_3 sizes: a length, or a multiple of the spacing written\n"
   "  --facet-distance X       with a trailing s (\"3s\"). Defaults: facet size 3s, facet\n"
-  "  --edge-size X            distance 0.1s, edge size (along the curves) 3s,\n"
+  "  --edge-size X            distance 0.1s or the noise scale if larger, edge size\n"
+  "                           (along the curves) 3s,\n"
   "  --facet-angle DEG        facet angle 25\n"
   "  --time-limit SEC       stop Mesh_3 after this long (default 1800; 0: none)\n"
   "  --curves-out FILE      write the curves given to Mesh_3 (one polyline per line)\n"
@@ -327,7 +328,7 @@ int main(int argc, char* argv[])
   const double seconds_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   if(!quiet) {
-    std::cout << points.size() << " points, spacing " << result.spacing << "\n";
+    std::cout << points.size() << " points, spacing " << result.spacing << ", noise " << result.noise << "\n";
     if(features)
       std::cout << "curves: " << result.repair.summary() << "; " << result.protected_curves
                 << " protected (" << result.protected_vertices << " protected vertices), "
@@ -347,7 +348,8 @@ int main(int argc, char* argv[])
   }
   if(!stats_path.empty()) {
     std::ofstream stats(stats_path);
-    stats << "points=" << points.size() << "\nspacing=" << result.spacing
+    stats << "points=" << points.size() << "\nspacing=" << result.spacing << "\nnoise=" << result.noise
+          << "\nfacet_distance=" << result.sizes.facet_distance
           << "\nfeatures=" << (features ? 1 : 0) << "\ncurves_in=" << result.repair.input_curves
           << "\ncurves_protected=" << result.protected_curves
           << "\ncurve_problems=" << result.curve_problems.size()

@@ -183,7 +183,7 @@ TEST_CASE("a box with a 45-degree chamfer and 0.5% noise yields 15 polylines and
 }
 
 TEST_CASE("an exact box with a step yields 18 polylines, the concave one included, and 12 corners",
-          "[shapes][step][!mayfail]")
+          "[shapes][step]")
 {
   check_stepped_box(0);
 }
@@ -227,7 +227,7 @@ TEST_CASE("two planes whose normals are 30 degrees apart, with 0.5% noise, yield
 }
 
 TEST_CASE("two exact planes forming a 30-degree wedge yield one open polyline on its edge",
-          "[shapes][planes][!mayfail]")
+          "[shapes][planes]")
 {
   check_two_planes(150, 0);
 }

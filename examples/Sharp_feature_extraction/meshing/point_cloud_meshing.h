@@ -51,6 +51,8 @@ struct Point_cloud_meshing_options
   double facet_distance = 0.1;
   double edge_size = 3;
   double facet_angle = 25;
+  /// The facet distance is at least this multiple of the cloud's noise scale.
+  double facet_distance_per_noise = 1;
   /// Absolute overrides (0: use the relative value).
   double spacing = 0, absolute_facet_size = 0, absolute_facet_distance = 0, absolute_edge_size = 0;
 
@@ -71,6 +73,7 @@ struct Point_cloud_meshing_result
   std::string error; ///< empty on success
   bool stopped = false;
   double spacing = 0;
+  double noise = 0; ///< noise scale (RMS distance to local planes, median)
   Mesh_sizes sizes;
   Curve_repair_report repair;
   std::vector<CGAL::Feature_polyline<GeomTraits>> curves; ///< the curves after the repair
@@ -108,6 +111,43 @@ double gradient_norm(const Function& f, const std::vector<Point_with_normal>& pw
     return 1;
   std::nth_element(g.begin(), g.begin() + g.size() / 2, g.end());
   return g[g.size() / 2] > 0 ? g[g.size() / 2] : 1;
+}
+
+/// noise scale of the cloud: median, over up to 2000 evenly spread points, of the RMS distance
+/// of their neighbours within 3 s to their best-fit plane. On smooth parts that is the normal
+/// noise (plus a little curvature); creases are few and do not move the median.
+template <typename Point_3>
+double noise_scale(const std::vector<Point_3>& points, double s)
+{
+  const double radius = 3 * s;
+  Spatial_grid<Point_3> grid(radius);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    grid.insert(points[i], i);
+  std::vector<double> rms;
+  const std::size_t step = (std::max)(std::size_t(1), points.size() / 2000);
+  for(std::size_t i = 0; i < points.size(); i += step) {
+    std::vector<std::size_t> near;
+    grid.for_each_within(points[i], radius, [&](std::size_t j, double) { near.push_back(j); });
+    if(near.size() < 6)
+      continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for(std::size_t j : near)
+      mean += Eigen::Vector3d(CGAL::to_double(points[j].x()), CGAL::to_double(points[j].y()),
+                              CGAL::to_double(points[j].z()));
+    mean /= double(near.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for(std::size_t j : near) {
+      const Eigen::Vector3d d = Eigen::Vector3d(CGAL::to_double(points[j].x()), CGAL::to_double(points[j].y()),
+                                                CGAL::to_double(points[j].z())) - mean;
+      covariance += d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance / double(near.size()));
+    rms.push_back(std::sqrt((std::max)(0., eigen.eigenvalues()(0))));
+  }
+  if(rms.empty())
+    return 0;
+  std::nth_element(rms.begin(), rms.begin() + rms.size() / 2, rms.end());
+  return rms[rms.size() / 2];
 }
 
 } // namespace meshing_internal
@@ -152,7 +192,12 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   }
   auto pick = [s](double absolute, double relative) { return absolute > 0 ? absolute : relative * s; };
   result.sizes.facet_size = pick(options.absolute_facet_size, options.facet_size);
-  result.sizes.facet_distance = pick(options.absolute_facet_distance, options.facet_distance);
+  // on a noisy cloud the implicit surface keeps bumps of about the noise: a facet distance
+  // below them would chase the bumps with ever smaller facets
+  result.noise = meshing_internal::noise_scale(points, s);
+  result.sizes.facet_distance = options.absolute_facet_distance > 0
+    ? options.absolute_facet_distance
+    : (std::max)(options.facet_distance * s, options.facet_distance_per_noise * result.noise);
   result.sizes.edge_size = pick(options.absolute_edge_size, options.edge_size);
   result.sizes.facet_angle = options.facet_angle;
 

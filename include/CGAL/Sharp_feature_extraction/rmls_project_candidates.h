@@ -16,7 +16,7 @@ namespace CGAL {
 /// meet near them (paper, section 3.3), with robust moving least squares (RMLS).
 ///
 /// For each candidate, a forward search splits its `rmls_neighbors` nearest points into smooth
-/// surfaces: a least-residual seed of 20 points grows by batches of the best-fitting points while
+/// surfaces: a least-residual seed of 12 points (20 on noisy data) grows by batches of the best-fitting points while
 /// their residual stays below the RMLS tolerance; the surface is removed and the search repeats,
 /// up to three surfaces. Surfaces whose normals differ by less than `sharpness_angle` are one
 /// surface split by noise. With one surface the candidate is dropped; with two, a Newton-like

@@ -14,7 +14,8 @@ namespace CGAL {
 /// Stage 3: smooths the edge points in place (paper, section 3.4).
 ///
 /// Each edge point moves to its orthogonal projection on the principal line of its neighbourhood:
-/// the nearest 10 edge points of the same crease (normal pairs within 25 degrees), grown by 5
+/// the nearest 10 edge points of the same crease (normal pairs within 25 degrees, orientation
+/// included, so that the convex and concave edges of a narrow step stay apart), grown by 5
 /// up to 30 until the largest covariance eigenvalue carries 80% of the total. Neighbourhoods
 /// never reach past the nearest corner point, so corners stay sharp; corner points do not move.
 /// In the last pass the normals are averaged over the neighbourhood, keeping their order and

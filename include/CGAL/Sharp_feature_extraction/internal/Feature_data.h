@@ -64,13 +64,15 @@ struct Curve_network
   std::vector<Corner_node> corners;
 };
 
-/// How the normal pair `b` matches the pair `a` up to order and sign: 0 no match, 1 same
-/// order, 2 swapped. Two normals match when their lines are within `cos_tolerance`.
+/// How the normal pair `b` matches the pair `a` up to order: 0 no match, 1 same order,
+/// 2 swapped. Two normals match when they are within `cos_tolerance`, orientation included:
+/// edge normals point away from the other surface, so a convex crease never matches a concave
+/// one with parallel faces (the two edges of a step).
 inline int match_normal_pairs(const std::array<Vec3, 2>& a, const std::array<Vec3, 2>& b,
                               double cos_tolerance)
 {
-  const double same = (std::min)(std::abs(a[0].dot(b[0])), std::abs(a[1].dot(b[1])));
-  const double swapped = (std::min)(std::abs(a[0].dot(b[1])), std::abs(a[1].dot(b[0])));
+  const double same = (std::min)(a[0].dot(b[0]), a[1].dot(b[1]));
+  const double swapped = (std::min)(a[0].dot(b[1]), a[1].dot(b[0]));
   if((std::max)(same, swapped) < cos_tolerance)
     return 0;
   return same >= swapped ? 1 : 2;

@@ -214,19 +214,24 @@ private:
   void attach_to_corner(std::size_t c, bool back, std::size_t corner)
   {
     Curve& curve = m_net.curves[c];
+    if(!back)
+      reverse_curve(curve);
+    // An end that overshot the corner (e.g. past a concave corner) is cut back to it, so that
+    // the curve does not fold back on itself.
     const Vec3 point = m_net.corners[corner].point;
-    if(back)
+    while(curve.points.size() > 2)
     {
-      curve.points.push_back(point);
-      curve.normals.push_back(curve.normals.back());
-      curve.back_corner = corner;
+      const std::size_t n = curve.points.size();
+      if((point - curve.points[n - 1]).dot(curve.points[n - 1] - curve.points[n - 2]) >= 0)
+        break;
+      curve.points.pop_back();
+      curve.normals.pop_back();
     }
-    else
-    {
-      curve.points.insert(curve.points.begin(), point);
-      curve.normals.insert(curve.normals.begin(), curve.normals.front());
-      curve.front_corner = corner;
-    }
+    curve.points.push_back(point);
+    curve.normals.push_back(curve.normals.back());
+    curve.back_corner = corner;
+    if(!back)
+      reverse_curve(curve);
   }
 
   // Resolves one free end; returns true if the network changed.

@@ -29,7 +29,11 @@ namespace internal {
 /// Forward search constants (counts of points unless stated).
 struct Forward_search_constants
 {
-  static constexpr std::size_t seed_size = 20;          // points in a seed subset
+  // Points in a seed subset: on clean data (quadric surfaces) just enough for a quadric and
+  // small enough to fit between the two sides of a thin wall; on noisy data (planes) more
+  // points average the noise out.
+  static constexpr std::size_t quadric_seed_size = 12;
+  static constexpr std::size_t plane_seed_size = 20;
   static constexpr std::size_t seed_trials = 8;         // seed subsets tried per surface
   static constexpr double batch_fraction = 0.2;         // largest batch added, relative to the set
   static constexpr std::size_t max_growth_steps = 60;
@@ -169,7 +173,8 @@ private:
     // Smaller seeds when what is left may hold two small surfaces (near corners), but enough
     // points to determine the fit.
     const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : C::min_surface_points;
-    const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(C::seed_size, m_free.size() / 3)));
+    const std::size_t seed_size = degree >= 2 ? C::quadric_seed_size : C::plane_seed_size;
+    const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(seed_size, m_free.size() / 3)));
     // Farthest point sampling of the centres, starting from the free point nearest the candidate.
     m_centers.assign(1, m_free.front());
     m_distance.assign(m_free.size(), std::numeric_limits<double>::infinity());
