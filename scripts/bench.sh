@@ -19,7 +19,10 @@
 #   2. the VCM sweep of R, r and threshold on fandisk at 100k points (full run only);
 #   3. every part x cloud variant: our pipeline (sfe_bench_run) and VCM (sfe_vcm_run);
 #   4. scaling on fandisk from 50k to 2M points;
-#   5. the report (benchmark/Sharp_feature_extraction/make_report.py).
+#   5. speed: fandisk at 500k points with 1 and 2 threads (noise 0 and 0.5%), and 10M points;
+#   6. the report (benchmark/Sharp_feature_extraction/make_report.py);
+#   7. full run only: feature-protected meshing with and without the curves
+#      (scripts/bench_meshing.sh, which writes benchmark/results/meshing/MESHING.md). (benchmark/Sharp_feature_extraction/make_report.py).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -98,13 +101,16 @@ install_missing_packages $BENCH_PACKAGES
 MESHES="$ROOT/out/meshes"
 mkdir -p "$MESHES"
 
+# The meshing benchmark needs two example programs (one of them includes Mesh_3: slow to build).
+MESHING=$([ "$QUICK" = 1 ] && echo 0 || echo 1)
+TARGETS=(sfe_ground_truth sfe_scoring_selftest sfe_vcm_run sfe_bench_run)
+[ "$MESHING" = 1 ] && TARGETS+=(mesh_with_sharp_features measure_mesh_against_truth)
 log "building the benchmark programs in $BUILD"
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSFE_BUILD_BENCHMARK=ON \
-  -DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_TESTS=OFF >"$BUILD.cmake.log" 2>&1 ||
+  -DSFE_BUILD_EXAMPLES="$([ "$MESHING" = 1 ] && echo ON || echo OFF)" -DSFE_BUILD_MESHING=ON \
+  -DSFE_BUILD_TESTS=OFF >"$BUILD.cmake.log" 2>&1 ||
   { cat "$BUILD.cmake.log"; exit 1; }
-# Only the benchmark is configured (examples and tests off), so "all" is exactly its programs,
-# built two at a time.
-nice cmake --build "$BUILD" -j2
+nice cmake --build "$BUILD" -j2 --target "${TARGETS[@]}"
 BIN="$BUILD/benchmark/Sharp_feature_extraction"
 MAKE_REPORT="$ROOT/benchmark/Sharp_feature_extraction/make_report.py"
 
@@ -132,6 +138,8 @@ if [ "$QUICK" = 1 ]; then
   VARIANTS="noise0:0:0:1 noise0.5:0.005:0:1"
   CONTROL_VARIANTS="noise0:0:0:1"
   SCALING_SIZES="50000 100000"
+  SPEED_POINTS=100000
+  LARGE_POINTS=""
   DO_SWEEP=0
   REPEAT_CHECK=0
 else
@@ -141,6 +149,8 @@ else
   VARIANTS="$NOISE_VARIANTS $OTHER_VARIANTS"
   CONTROL_VARIANTS="$VARIANTS"
   SCALING_SIZES="50000 100000 200000 500000 1000000 2000000"
+  SPEED_POINTS=500000
+  LARGE_POINTS=10000000
   DO_SWEEP=1
   REPEAT_CHECK=1
 fi
@@ -242,6 +252,31 @@ for n in $SCALING_SIZES; do
   fi
 done
 
+log "speed: fandisk at $SPEED_POINTS points with 1 and 2 threads${LARGE_POINTS:+, and $LARGE_POINTS points}"
+for variant in noise0:0 noise0.5:0.005; do
+  IFS=: read -r name noise <<<"$variant"
+  cloud=(--mesh "$MESHES/fandisk.off" --truth "$DATA/truth/fandisk" --points "$SPEED_POINTS" --noise "$noise"
+         --seed "$SEED")
+  for threads in 1 2; do
+    log "  ours, $name, $threads thread(s)"
+    run_row "$DATA/speed.jsonl" "speed_${name}_${SPEED_POINTS}" ours "$BIN/sfe_bench_run" "${cloud[@]}" \
+      --threads "$threads" --save-curves "$DATA/curves/speed_${name}_t$threads.polylines.txt"
+  done
+  if cmp -s "$DATA/curves/speed_${name}_t1.polylines.txt" "$DATA/curves/speed_${name}_t2.polylines.txt"; then
+    echo "speed_${name}_${SPEED_POINTS} identical" >>"$DATA/speed_threads.txt"
+  else
+    echo "speed_${name}_${SPEED_POINTS} DIFFERENT" >>"$DATA/speed_threads.txt"
+  fi
+  log "  VCM, $name"
+  run_row "$DATA/speed.jsonl" "speed_${name}_${SPEED_POINTS}" vcm timeout "$VCM_TIMEOUT" "$BIN/sfe_vcm_run" \
+    "${cloud[@]}" --R "$VCM_R" --r "$VCM_r" --threshold "$VCM_T"
+done
+if [ -n "$LARGE_POINTS" ]; then
+  log "  ours, $LARGE_POINTS points, 2 threads"
+  run_row "$DATA/speed.jsonl" "speed_noise0_$LARGE_POINTS" ours "$BIN/sfe_bench_run" --mesh "$MESHES/fandisk.off" \
+    --truth "$DATA/truth/fandisk" --points "$LARGE_POINTS" --noise 0 --seed "$SEED" --threads 2
+fi
+
 # The machine and the commands, for the report.
 {
   echo "cpu: $(lscpu | sed -n 's/^Model name: *//p' | head -1)"
@@ -263,4 +298,10 @@ done
 log "report: $REPORT/REPORT.md"
 mkdir -p "$REPORT"
 "$PYTHON" "$MAKE_REPORT" --data "$DATA" --report "$REPORT" $([ "$QUICK" = 1 ] && echo --quick)
+
+if [ "$MESHING" = 1 ]; then
+  log "feature-protected meshing: scripts/bench_meshing.sh (log: $DATA/logs/meshing.log)"
+  "$ROOT/scripts/bench_meshing.sh" --build "$BUILD" --work "$DATA/meshing" --time-limit 600 >"$DATA/logs/meshing.log" 2>&1 ||
+    log "  the meshing benchmark failed: see $DATA/logs/meshing.log"
+fi
 log "done in $((SECONDS - START_SECONDS)) s"

@@ -53,13 +53,13 @@ work="${work:-$build/meshing_work}"
 results="$root/benchmark/results/meshing"
 mkdir -p "$work" "$results"
 
-# the true meshes: CGAL's sample data (Debian package libcgal-dev / libcgal-demo)
-data="$work/data/meshes"
-if [ ! -f "$data/fandisk.off" ]; then
-  archive=/usr/share/doc/libcgal-dev/data.tar.gz
-  [ -f "$archive" ] || { echo "bench_meshing.sh: $archive missing (install libcgal-dev)" >&2; exit 1; }
-  tar -xzf "$archive" -C "$work" data/meshes
-fi
+# CGAL's sample meshes, from libcgal-demo (fetched into out/ when it is not installed)
+# shellcheck source=scripts/common.sh
+source "$root/scripts/common.sh"
+data="$SFE_OUT_DIR/meshes"
+for part in $parts; do
+  fetch_cgal_mesh "$part" > /dev/null
+done
 
 # does this build extract curves itself?
 extraction=1

@@ -267,10 +267,11 @@ def write_report(data, report, quick):
     accuracy_rows = read_rows(os.path.join(data, "accuracy.jsonl"))
     scaling_rows = read_rows(os.path.join(data, "scaling.jsonl"))
     repeat_rows = read_rows(os.path.join(data, "repeat.jsonl"))
+    speed_rows = read_rows(os.path.join(data, "speed.jsonl"))
     machine = machine_info(data)
     vcm_setting = open(os.path.join(data, "vcm_setting.txt")).read().split()
 
-    failures = [r for r in accuracy_rows + scaling_rows + sweep_rows + repeat_rows
+    failures = [r for r in accuracy_rows + scaling_rows + sweep_rows + repeat_rows + speed_rows
                 if r.get("status") in ("failed", "timeout")]
     ours, vcm = {}, {}
     for r in accuracy_rows:
@@ -539,6 +540,36 @@ def write_report(data, report, quick):
         plot_scaling(s_ours, s_vcm, os.path.join(report, "scaling.png"))
         w("![time and memory vs N](scaling.png)\n")
 
+    # Speed.
+    if speed_rows:
+        w("## 7b. Speed: fandisk, 1 and 2 threads\n")
+        vcm_speed = {r["label"]: r for r in speed_rows if r.get("method") == "vcm" and not r.get("status")}
+        rows = []
+        for r in speed_rows:
+            if r.get("method") != "ours" or r.get("status"):
+                continue
+            v = vcm_speed.get(r["label"])
+            per_point = 1e6 / r["points"]
+            rows.append([f"{r['points']:,}", pct(r.get("noise", 0), 2), r.get("threads") or "all",
+                         secs(r["time_candidates"]), secs(r["time_projection"]), secs(r["time_smoothing"]),
+                         secs(r["time_growing"]), secs(r["time_completion"]), f"**{secs(r['time_total'])}**",
+                         fmt(r["time_total"] / r["points"] * 1e6, 2),
+                         secs(v["time_total"]) if v else "-",
+                         fmt(v["time_total"] / r["time_total"], 1) if v else "-",
+                         fmt(r["heap_peak_mb"] * 1048576 / r["points"], 0),
+                         fmt(r["rss_peak_mb"] * 1048576 / r["points"], 0),
+                         fmt(r.get("ours_f1@0.5"))])
+        w(table(["points", "noise (% dB)", "threads", "candidates (s)", "projection", "smoothing", "growing",
+                 "completion", "ours total", "us per point", "VCM (s)", "VCM / ours", "heap B per point",
+                 "peak RSS B per point", "ours F1 0.5%"], rows))
+        same_path = os.path.join(data, "speed_threads.txt")
+        if os.path.exists(same_path):
+            w("\nCurves with 1 and 2 threads, compared byte for byte: " +
+              "; ".join(line.strip() for line in open(same_path) if line.strip()) + ".")
+        w("\nVCM runs single-threaded (CGAL 5.5). Heap: bytes allocated by the pipeline through operator new "
+          "at its peak; peak RSS: the whole process (the cloud itself, 24 bytes per point, the ground truth "
+          "and the scoring included).\n")
+
     # Pictures.
     w("## 8. Our curves on fandisk\n")
     pictures = [(os.path.join(data, "pictures", f"curves_fandisk_{v}.png"), f"{VARIANT_TITLES[v]}")
@@ -561,6 +592,15 @@ def write_report(data, report, quick):
                          f"{secs(first['time_total']) if first else '-'} / {secs(r['time_total'])}"])
         w(table(["configuration run twice", "accuracy figures identical", "differing", "times (s)"], rows))
         w("\nThe clouds depend only on the seed; accuracy figures must repeat exactly, times vary.\n")
+
+    # Meshing (written after this report by scripts/bench_meshing.sh, full run only).
+    if not quick:
+        w("## 10. Feature-protected meshing\n")
+        w("The last step of `scripts/bench.sh` runs `scripts/bench_meshing.sh`: each part is sampled "
+          "(100k points, noise 0 and 0.5% dB), meshed by `mesh_with_sharp_features` with and without "
+          "the extracted curves as Mesh_3 features, and both meshes are measured against the true mesh "
+          "(distances, crease band, crease angles, triangle count, validity) and rendered with the same "
+          "cameras. Tables and pictures: [meshing/MESHING.md](meshing/MESHING.md).\n")
 
     # Self-test and failures.
     w("## Checks\n")

@@ -5,7 +5,7 @@
 //
 //   sfe_bench_run --mesh M.off --truth PREFIX --points 100000 --noise 0.005 [--outliers 0.01]
 //                 [--denser 5] [--seed 1] [--output rows.jsonl] [--picture curves.png]
-//                 [--save-curves curves.polylines.txt] [--stage-memory 1]
+//                 [--save-curves curves.polylines.txt] [--stage-memory 1] [--threads N]
 //
 // Samples the cloud (same sampler and seed as sfe_vcm_run, so both see the same points), runs
 // CGAL::extract_sharp_features with default parameters only, and appends one JSON line: the
@@ -15,6 +15,8 @@
 //
 // --stage-memory 1 afterwards reruns the five stages one by one to measure the heap peak of
 // each (extract_sharp_features gives one peak for the whole run).
+//
+// --threads N limits the run to N threads (default 0: all cores).
 
 #include "bench_support.h"
 #include "memory_tracking.h"
@@ -24,6 +26,11 @@
 #include <utilities/feature_rendering.h>
 
 #include <iostream>
+#include <memory>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 using namespace sfe_bench;
 
@@ -115,9 +122,16 @@ int main(int argc, char** argv)
     defaults["picture"] = "";
     defaults["save-curves"] = "";
     defaults["stage-memory"] = "0";
+    defaults["threads"] = "0";
     const Command_line options(argc, argv, defaults);
     if(options.text("mesh").empty() || options.text("truth").empty())
       throw std::invalid_argument("--mesh and --truth are required\n" + options.usage());
+    const int threads = int(options.number("threads"));
+#ifdef CGAL_LINKED_WITH_TBB
+    std::unique_ptr<tbb::global_control> thread_limit;
+    if(threads > 0)
+      thread_limit.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, threads));
+#endif
 
     const Ground_truth truth = read_ground_truth(options.text("truth"));
     const bool has_truth = !truth.curves.empty();
@@ -126,6 +140,7 @@ int main(int argc, char** argv)
     Json_line line;
     add_cloud_fields(line, options, cloud.size());
     line.add("method", "ours");
+    line.add("threads", threads);
     {
       Result result;
       reset_heap_peak();

@@ -54,7 +54,7 @@ struct Curve_repair_report
   std::size_t junction_splits = 0;     ///< splits where an end or another curve touches an interior vertex
   std::size_t sharp_turn_splits = 0;
   std::size_t dropped_short = 0;
-  std::size_t dropped_parallel = 0;    ///< curves dropped because they ran along a longer one
+  std::size_t dropped_parallel = 0;    ///< curves dropped because they ran along a longer one (duplicates)
   std::size_t discarded_normals = 0;   ///< curves whose normals did not match their points
 
   std::string summary() const
@@ -445,6 +445,55 @@ void drop_parallel_duplicates(std::vector<Curve>& curves, double tol, Curve_repa
   curves = std::move(kept);
 }
 
+/// A curve lying mostly (70% of its vertices) within the tolerance of one longer curve is that
+/// curve found twice, even when the two leave a shared junction at an acute angle (the
+/// close-run test ignores junction neighbourhoods): it goes. Curves are densified, so vertex
+/// counts measure length.
+template <typename Curve, typename Point_3>
+void drop_covered_curves(std::vector<Curve>& curves, double tol, Curve_repair_report& report)
+{
+  const double covered_fraction = 0.7;
+  Spatial_grid<Point_3> grid(tol);
+  std::vector<std::size_t> owner;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    for(const Point_3& p : curves[c].points) {
+      grid.insert(p, owner.size());
+      owner.push_back(c);
+    }
+  std::vector<std::size_t> order(curves.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return curve_length(curves[a]) < curve_length(curves[b]);
+  });
+  std::vector<bool> dropped(curves.size(), false);
+  for(std::size_t a : order) {
+    const double length_a = curve_length(curves[a]);
+    std::map<std::size_t, std::size_t> near_count; // other curve -> vertices of a near it
+    for(const Point_3& p : curves[a].points) {
+      std::vector<std::size_t> seen;
+      grid.for_each_within(p, tol, [&](std::size_t id, double) {
+        const std::size_t b = owner[id];
+        if(b != a && !dropped[b] && std::find(seen.begin(), seen.end(), b) == seen.end())
+          seen.push_back(b);
+      });
+      for(std::size_t b : seen)
+        ++near_count[b];
+    }
+    for(const auto& nc : near_count)
+      if(curve_length(curves[nc.first]) >= length_a &&
+         nc.second >= covered_fraction * curves[a].points.size()) {
+        dropped[a] = true;
+        ++report.dropped_parallel;
+        break;
+      }
+  }
+  std::vector<Curve> kept;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(!dropped[c])
+      kept.push_back(std::move(curves[c]));
+  curves = std::move(kept);
+}
+
 /// Interior vertices of two curves (or of one curve, far apart along it) closer than the
 /// tolerance over a short stretch: the curves cross or touch; they meet at the midpoint of the
 /// closest pair, and both are split there.
@@ -519,6 +568,10 @@ void split_sharp_turns(std::vector<Curve>& curves, double reach, double angle_de
 
 } // namespace repair_internal
 
+template <typename GeomTraits>
+std::vector<std::string> find_mesh_3_feature_problems(
+  const std::vector<CGAL::Feature_polyline<GeomTraits>>& curves, double tolerance);
+
 /// Repairs `curves` in place so that Mesh_3 accepts them as protected features:
 /// removes non-finite and duplicate points; snaps ends within the tolerance to one shared point
 /// (preferring an exactly shared end, then a point of `junction_hints`, such as the corners of
@@ -554,38 +607,55 @@ Curve_repair_report repair_feature_curves_for_mesh_3(
                               [](const Curve& c) { return c.points.size() < 2; }),
                curves.end());
 
-  if(tol > 0) {
-    std::size_t closed_before = 0;
-    for(const Curve& c : curves)
-      closed_before += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
-    snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
-    std::size_t closed_after = 0;
-    for(const Curve& c : curves)
-      closed_after += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
-    report.closed_loops = closed_after - closed_before;
-    drop_parallel_duplicates<Curve, Point_3>(curves, tol, report);
-    split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
-    // sharp turns first: the two legs of an acute turn are close, but they are not a contact
-    split_sharp_turns(curves, tol, options.sharp_turn_angle, report);
-    resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
-  }
-
-  // snapping may have created zero-length pieces or duplicated points
-  for(Curve& c : curves)
-    report.removed_points += remove_bad_points(c, merge_distance);
-  std::vector<Curve> kept;
-  for(Curve& c : curves) {
-    const bool closed = c.points.size() > 2 && c.points.front() == c.points.back();
-    const double min_length = closed ? 3 * options.minimum_length : options.minimum_length;
-    const bool degenerate = c.points.size() < 2 || (c.points.size() < 4 && closed) ||
-                            (c.points.front() == c.points.back() && !closed);
-    if(degenerate || curve_length(c) < min_length || curve_length(c) == 0) {
-      ++report.dropped_short;
-      continue;
+  // snapping may create zero-length pieces or duplicated points, splitting may create pieces
+  // too short to mesh
+  auto clean_up = [&]() {
+    for(Curve& c : curves)
+      report.removed_points += remove_bad_points(c, merge_distance);
+    std::vector<Curve> kept;
+    for(Curve& c : curves) {
+      const bool closed = c.points.size() > 2 && c.points.front() == c.points.back();
+      const double min_length = closed ? 3 * options.minimum_length : options.minimum_length;
+      const bool degenerate = c.points.size() < 2 || (c.points.size() < 4 && closed) ||
+                              (c.points.front() == c.points.back() && !closed);
+      if(degenerate || curve_length(c) < min_length || curve_length(c) == 0) {
+        ++report.dropped_short;
+        continue;
+      }
+      kept.push_back(std::move(c));
     }
-    kept.push_back(std::move(c));
+    curves = std::move(kept);
+  };
+  auto count_closed = [&]() {
+    std::size_t n = 0;
+    for(const Curve& c : curves)
+      n += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
+    return n;
+  };
+
+  if(tol > 0) {
+    const std::size_t closed_before = count_closed();
+    // each pass can leave new ends near others (a split moves a vertex, a dropped piece frees
+    // an end): repeat until nothing is left to fix
+    for(int pass = 0; pass < 4; ++pass) {
+      snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
+      if(pass == 0) {
+        drop_covered_curves<Curve, Point_3>(curves, tol, report);
+        drop_parallel_duplicates<Curve, Point_3>(curves, tol, report);
+        // sharp turns first: the two legs of an acute turn are close, but they are not a contact
+        split_sharp_turns(curves, tol, options.sharp_turn_angle, report);
+      }
+      split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
+      resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
+      clean_up();
+      if(find_mesh_3_feature_problems(curves, tol).empty())
+        break;
+    }
+    const std::size_t closed_after = count_closed();
+    report.closed_loops = closed_after > closed_before ? closed_after - closed_before : 0;
+  } else {
+    clean_up();
   }
-  curves = std::move(kept);
   report.output_curves = curves.size();
   return report;
 }

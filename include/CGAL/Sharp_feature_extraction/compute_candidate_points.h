@@ -64,10 +64,10 @@ bool compute_candidate_points(
   sfe::Indexed_input input;
   sfe::index_input_points<ConcurrencyTag>(points, np, input);
   sfe::Candidate_output out;
-  const bool completed = sfe::compute_candidates<ConcurrencyTag>(input.points, input.index, settings,
+  const bool completed = sfe::compute_candidates<ConcurrencyTag>(input, settings,
                                                                  sfe::Progress(settings.callback), out);
-  candidates.residuals.assign(out.residuals.begin(), out.residuals.end());
-  candidates.indices = out.candidates;
+  candidates.residuals = input.in_input_order<typename GT::FT>(out.residuals);
+  candidates.indices = input.input_indices(out.candidates);
   candidates.scales = sfe::to_public<typename GT::FT>(out.scales);
   return completed;
 }

@@ -43,17 +43,17 @@ bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_fe
 
   timer.start();
   Candidate_output candidates;
-  if(!compute_candidates<ConcurrencyTag>(input.points, input.index, settings, progress.sub(0, progress_end_of_stage[0]), candidates))
+  if(!compute_candidates<ConcurrencyTag>(input, settings, progress.sub(0, progress_end_of_stage[0]), candidates))
     return false;
   const Scales& scales = candidates.scales;
-  result.candidates.residuals.assign(candidates.residuals.begin(), candidates.residuals.end());
-  result.candidates.indices = candidates.candidates;
+  result.candidates.residuals = input.in_input_order<typename GT::FT>(candidates.residuals);
+  result.candidates.indices = input.input_indices(candidates.candidates);
   result.candidates.scales = to_public<typename GT::FT>(scales);
   result.timings.candidates = timer.time();
 
   timer.reset();
   Feature_samples features;
-  if(!rmls_project<ConcurrencyTag>(input.points, input.index, candidates.candidates, scales, settings,
+  if(!rmls_project<ConcurrencyTag>(input, candidates.candidates, scales, settings,
                                    progress.sub(progress_end_of_stage[0], progress_end_of_stage[1]), features))
     return false;
   result.projected = to_public<GT>(features, scales);

@@ -54,7 +54,7 @@ bool rmls_project_candidates(
       throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
   const sfe::Scales scales = sfe::to_internal(candidates.scales);
   sfe::Feature_samples out;
-  const bool completed = sfe::rmls_project<ConcurrencyTag>(input.points, input.index, candidates.indices, scales, settings,
+  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, input.positions(candidates.indices), scales, settings,
                                                            sfe::Progress(settings.callback), out);
   projected = sfe::to_public<GT>(out, scales);
   return completed;

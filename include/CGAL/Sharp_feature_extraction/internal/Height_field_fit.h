@@ -30,19 +30,24 @@ template <typename IndexRange>
 bool principal_frame(const std::vector<Vec3>& points, const IndexRange& indices,
                      Local_frame& frame, Vec3& spread)
 {
+  // One pass: moments about the first point (close to all the others, so no cancellation).
   std::size_t count = 0;
-  Vec3 centroid = Vec3::Zero();
-  for(std::size_t i : indices) { centroid += points[i]; ++count; }
-  if(count < 3)
-    return false;
-  centroid /= double(count);
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  Vec3 first = Vec3::Zero(), sum = Vec3::Zero();
+  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero();
   for(std::size_t i : indices)
   {
-    const Vec3 d = points[i] - centroid;
-    covariance.noalias() += d * d.transpose();
+    if(count == 0)
+      first = points[i];
+    const Vec3 d = points[i] - first;
+    sum += d;
+    second_moment.noalias() += d * d.transpose();
+    ++count;
   }
-  covariance /= double(count);
+  if(count < 3)
+    return false;
+  const Vec3 mean = sum / double(count);
+  const Eigen::Matrix3d covariance = second_moment / double(count) - mean * mean.transpose();
+  const Vec3 centroid = first + mean;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
   solver.computeDirect(covariance);
   frame.origin = centroid;
@@ -123,18 +128,42 @@ public:
     scale = extent > 0 ? std::sqrt(extent) : 1.;
     const int unknowns = (degree >= 2 && count >= minimum_points_for_quadric) ? 6 : 3;
 
-    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    Eigen::Matrix<double, 6, 1> row;
+    // The normal matrix of the monomials 1, X, Y, X^2, XY, Y^2 only holds the 15 moments
+    // sum w X^a Y^b (a + b <= 4): accumulate those and the 6 right-hand sides, then assemble.
+    double moment[15] = {0};     // 1 X Y XX XY YY XXX XXY XYY YYY XXXX XXXY XXYY XYYY YYYY
+    double weighted_z[6] = {0}; // z, X z, Y z, XX z, XY z, YY z
+    const double inverse_scale = 1. / scale;
     const double inverse_square_bandwidth = bandwidth > 0 ? 1. / (bandwidth * bandwidth) : 0.;
     for(std::size_t i : indices)
     {
       const Vec3 d = points[i] - frame.origin;
-      const double X = d.dot(frame.u) / scale, Y = d.dot(frame.v) / scale;
+      const double X = d.dot(frame.u) * inverse_scale, Y = d.dot(frame.v) * inverse_scale;
+      const double z = d.dot(frame.n);
       const double w = bandwidth > 0 ? std::exp(-(points[i] - center).squaredNorm() * inverse_square_bandwidth) : 1.;
-      row << 1, X, Y, X * X, X * Y, Y * Y;
-      normal_matrix.noalias() += w * row * row.transpose();
-      rhs.noalias() += w * row * d.dot(frame.n);
+      const double wX = w * X, wY = w * Y;
+      moment[0] += w; moment[1] += wX; moment[2] += wY;
+      moment[3] += wX * X; moment[4] += wX * Y; moment[5] += wY * Y;
+      weighted_z[0] += w * z; weighted_z[1] += wX * z; weighted_z[2] += wY * z;
+      if(unknowns == 6)
+      {
+        const double XX = X * X, XY = X * Y, YY = Y * Y;
+        moment[6] += wX * XX; moment[7] += wX * XY; moment[8] += wX * YY; moment[9] += wY * YY;
+        moment[10] += wX * X * XX; moment[11] += wX * X * XY; moment[12] += wX * X * YY; moment[13] += wX * Y * YY;
+        moment[14] += wY * Y * YY;
+        weighted_z[3] += w * XX * z; weighted_z[4] += w * XY * z; weighted_z[5] += w * YY * z;
+      }
+    }
+    // moment index of the product of monomials a and b (a, b in 0..5)
+    static constexpr int product_moment[6][6] = {{0, 1, 2, 3, 4, 5},     {1, 3, 4, 6, 7, 8},
+                                                 {2, 4, 5, 7, 8, 9},     {3, 6, 7, 10, 11, 12},
+                                                 {4, 7, 8, 11, 12, 13},  {5, 8, 9, 12, 13, 14}};
+    Eigen::Matrix<double, 6, 6> normal_matrix;
+    Eigen::Matrix<double, 6, 1> rhs;
+    for(int a = 0; a < 6; ++a)
+    {
+      rhs[a] = weighted_z[a];
+      for(int b = 0; b < 6; ++b)
+        normal_matrix(a, b) = moment[product_moment[a][b]];
     }
     // Ridge term relative to the matrix size: keeps nearly collinear neighbourhoods solvable,
     // and is negligible (1e-9 of the unit-scaled moments) on well spread ones.
@@ -143,13 +172,13 @@ public:
     if(unknowns == 6)
     {
       normal_matrix.diagonal().array() += ridge;
-      coefficients = normal_matrix.ldlt().solve(rhs);
+      coefficients = solve_normal_equations(normal_matrix, rhs);
     }
     else
     {
       Eigen::Matrix3d m = normal_matrix.topLeftCorner<3, 3>();
       m.diagonal().array() += ridge;
-      coefficients.head<3>() = m.ldlt().solve(rhs.head<3>());
+      coefficients.head<3>() = solve_normal_equations(m, Eigen::Vector3d(rhs.head<3>()));
     }
     if(!coefficients.allFinite())
     {
@@ -162,6 +191,17 @@ public:
   static constexpr std::size_t minimum_points_for_quadric = 10;
 
 private:
+  /// Cholesky factorization of the (symmetric, positive semi-definite) normal matrix; the
+  /// pivoting LDLT factorization when it is not numerically positive definite.
+  template <typename Matrix, typename Vector>
+  static Vector solve_normal_equations(const Matrix& normal_matrix, const Vector& rhs)
+  {
+    Eigen::LLT<Matrix> cholesky(normal_matrix);
+    if(cholesky.info() == Eigen::Success)
+      return cholesky.solve(rhs);
+    return normal_matrix.ldlt().solve(rhs);
+  }
+
   double value(double X, double Y) const
   {
     const Eigen::Matrix<double, 6, 1>& c = coefficients;

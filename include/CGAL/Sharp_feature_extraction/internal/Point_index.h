@@ -66,13 +66,14 @@ public:
 
   std::size_t size() const { return m_points.size(); }
 
-  /// The `k` nearest points to `q`, nearest first (indices appended to `out`, cleared first).
-  void nearest(const Vec3& q, std::size_t k, std::vector<std::size_t>& out) const
+  /// The `k` nearest points to `q` (indices appended to `out`, cleared first): nearest first
+  /// when `sorted`, in an unspecified (but deterministic) order otherwise, which is faster.
+  void nearest(const Vec3& q, std::size_t k, std::vector<std::size_t>& out, bool sorted = true) const
   {
     out.clear();
     if(m_points.empty() || k == 0)
       return;
-    Knn search(*m_tree, Point(q.x(), q.y(), q.z()), (unsigned int)k, 0, true, Distance(m_map), true);
+    Knn search(*m_tree, Point(q.x(), q.y(), q.z()), (unsigned int)k, 0, true, Distance(m_map), sorted);
     for(const auto& entry : search)
       out.push_back(entry.first);
   }

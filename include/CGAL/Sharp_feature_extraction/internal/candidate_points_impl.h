@@ -6,6 +6,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
 
+#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
@@ -42,10 +43,11 @@ constexpr std::size_t spacing_neighbor = 6;
 /// At most this many points are used to estimate spacing, noise and neighbourhood radii.
 constexpr std::size_t scale_sample_size = 20000;
 
+/// Stage-1 results, indexed like `Indexed_input::points` (spatial order).
 struct Candidate_output
 {
   std::vector<double> residuals;
-  std::vector<std::size_t> candidates;
+  std::vector<std::size_t> candidates; // ascending positions
   Scales scales;
 };
 
@@ -89,22 +91,36 @@ inline double median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
-/// Spacing, noise and neighbourhood sizes from a regular subsample of the cloud, then the
-/// user's overrides. Returns false when the cloud has no extent (all points identical).
-inline bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
-                          const Settings& settings, Scales& scales)
+/// Spacing, noise and neighbourhood sizes from a regular subsample of the cloud (regular in
+/// the spatial order of `points`), then the user's overrides. Returns false when the cloud has
+/// no extent (all points identical) or when cancelled (then `progress` is cancelled).
+template <typename ConcurrencyTag>
+bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
+                   const Settings& settings, Progress progress, Scales& scales)
 {
   const std::size_t n = points.size();
   const std::size_t stride = (std::max<std::size_t>)(1, n / scale_sample_size);
+  const std::size_t samples = (n + stride - 1) / stride;
   const std::size_t k0 = (std::min)(base_candidate_neighbors, n);
-  std::vector<double> spacing, rms;
-  std::vector<std::size_t> neighbors;
-  for(std::size_t i = 0; i < n; i += stride)
-  {
-    index.nearest(points[i], k0, neighbors);
-    spacing.push_back((points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - points[i]).norm());
-    rms.push_back(fit_residuals(points, neighbors, settings.degree_fitting).rms_residual);
-  }
+  // The first pass also searches 2 k0 neighbours: the radii of the default neighbourhood sizes
+  // on data without noise, which then need no second pass.
+  const std::size_t k_first = (std::min)(2 * base_candidate_neighbors, n);
+  std::vector<double> spacing(samples), rms(samples), r1(samples), r2(samples);
+  Progress first_half = progress.sub(0, 0.5), second_half = progress.sub(0.5, 1);
+  if(!parallel_blocks<ConcurrencyTag>(samples, first_half, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> neighbors;
+       for(std::size_t s = first; s < last; ++s)
+       {
+         const Vec3& p = points[s * stride];
+         index.nearest(p, k_first, neighbors);
+         spacing[s] = (points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - p).norm();
+         r1[s] = (points[neighbors[k0 - 1]] - p).norm();
+         r2[s] = (points[neighbors.back()] - p).norm();
+         neighbors.resize(k0);
+         rms[s] = fit_residuals(points, neighbors, settings.degree_fitting).rms_residual;
+       }
+     }))
+    return false;
   scales.spacing = std::accumulate(spacing.begin(), spacing.end(), 0.) / double(spacing.size());
   if(!(scales.spacing > 0))
     return false;
@@ -120,13 +136,18 @@ inline bool derive_scales(const std::vector<Vec3>& points, const Point_index& in
   scales.rmls_neighbors = (std::max<std::size_t>)(7, (std::min)(scales.rmls_neighbors, n));
 
   // Neighbourhood radii: the median distance to the k-th neighbour.
-  std::vector<double> r1, r2;
-  for(std::size_t i = 0; i < n; i += stride)
-  {
-    index.nearest(points[i], scales.rmls_neighbors, neighbors);
-    r1.push_back((points[neighbors[(std::min)(scales.candidate_neighbors, neighbors.size()) - 1]] - points[i]).norm());
-    r2.push_back((points[neighbors.back()] - points[i]).norm());
-  }
+  if((scales.candidate_neighbors != k0 || scales.rmls_neighbors != k_first)
+     && !parallel_blocks<ConcurrencyTag>(samples, second_half, [&](std::size_t first, std::size_t last) {
+          std::vector<std::size_t> neighbors;
+          for(std::size_t s = first; s < last; ++s)
+          {
+            const Vec3& p = points[s * stride];
+            index.nearest(p, scales.rmls_neighbors, neighbors);
+            r1[s] = (points[neighbors[(std::min)(scales.candidate_neighbors, neighbors.size()) - 1]] - p).norm();
+            r2[s] = (points[neighbors.back()] - p).norm();
+          }
+        }))
+    return false;
   // The RMLS tolerance must admit the noise but never fall to 0 on exact data.
   scales.rmls_tolerance = settings.rmls_tolerance > 0
     ? settings.rmls_tolerance
@@ -140,23 +161,28 @@ inline bool derive_scales(const std::vector<Vec3>& points, const Point_index& in
 
 /// Stage 1 on every point. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool compute_candidates(const std::vector<Vec3>& points, const Point_index& index,
-                        const Settings& settings, Progress progress, Candidate_output& out)
+bool compute_candidates(const Indexed_input& input, const Settings& settings, Progress progress,
+                        Candidate_output& out)
 {
+  const std::vector<Vec3>& points = input.points;
+  const Point_index& index = input.index;
   const std::size_t n = points.size();
   out = Candidate_output();
   out.residuals.assign(n, 0.);
-  if(n < minimum_number_of_points || !derive_scales(points, index, settings, out.scales))
-    return progress.report(1.);
+  Progress scale_progress = progress.sub(0, 0.05);
+  if(n < minimum_number_of_points
+     || !derive_scales<ConcurrencyTag>(points, index, settings, scale_progress, out.scales))
+    return !scale_progress.cancelled() && progress.report(1.);
 
   const std::size_t k = out.scales.candidate_neighbors;
   const int degree = settings.degree_fitting;
   std::vector<double>& residuals = out.residuals;
-  if(!parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
+  Progress fit_progress = progress.sub(0.05, 1);
+  if(!parallel_blocks<ConcurrencyTag>(n, fit_progress, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> neighbors;
        for(std::size_t i = first; i < last; ++i)
        {
-         index.nearest(points[i], k, neighbors);
+         index.nearest(points[i], k, neighbors, false); // the fit does not need them sorted
          residuals[i] = fit_residuals(points, neighbors, degree).max_residual;
        }
      }))

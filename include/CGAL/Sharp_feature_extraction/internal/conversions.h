@@ -10,9 +10,14 @@
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -57,18 +62,87 @@ std::vector<Vec3> read_input_points(const PointRange& points, PointMap point_map
   return out;
 }
 
-/// The input points in double precision with their spatial index: what stages 1 and 2 search.
+/// Reads `Vec3` points as kernel points, for CGAL's spatial sorting.
+struct Vec3_as_point_map
+{
+  typedef std::size_t key_type;
+  typedef CGAL::Simple_cartesian<double>::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<Vec3>* points = nullptr;
+  friend value_type get(const Vec3_as_point_map& m, std::size_t i)
+  {
+    const Vec3& p = (*m.points)[i];
+    return value_type(p.x(), p.y(), p.z());
+  }
+};
+
+/// The input points in double precision, in spatial (Hilbert curve) order, with their spatial
+/// index: what stages 1 and 2 search. Neighbours in space are then neighbours in memory, and
+/// consecutive queries visit the same part of the tree, which makes the neighbour searches
+/// several times faster than in input order on large clouds.
 struct Indexed_input
 {
+  /// The points, in spatial order.
   std::vector<Vec3> points;
+  /// `input_index[i]` is the position in the input range of `points[i]`.
+  std::vector<std::size_t> input_index;
   Point_index index;
+
+  /// The input positions of the points at `positions`, ascending.
+  std::vector<std::size_t> input_indices(const std::vector<std::size_t>& positions) const
+  {
+    std::vector<std::size_t> out;
+    out.reserve(positions.size());
+    for(std::size_t i : positions)
+      out.push_back(input_index[i]);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// The positions in `points` of the input points `indices`, ascending (spatial order).
+  std::vector<std::size_t> positions(const std::vector<std::size_t>& indices) const
+  {
+    std::vector<std::size_t> position_of(input_index.size());
+    for(std::size_t i = 0; i < input_index.size(); ++i)
+      position_of[input_index[i]] = i;
+    std::vector<std::size_t> out;
+    out.reserve(indices.size());
+    for(std::size_t i : indices)
+      out.push_back(position_of[i]);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// `values` (one per point, in spatial order) in input order.
+  template <typename FT>
+  std::vector<FT> in_input_order(const std::vector<double>& values) const
+  {
+    std::vector<FT> out(values.size());
+    for(std::size_t i = 0; i < values.size(); ++i)
+      out[input_index[i]] = FT(values[i]);
+    return out;
+  }
 };
 
 template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
 void index_input_points(const PointRange& points, const NamedParameters& np, Indexed_input& out)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  out.points = read_input_points(points, NP_helper::get_const_point_map(points, np));
+  std::vector<Vec3> read = read_input_points(points, NP_helper::get_const_point_map(points, np));
+  out.input_index.resize(read.size());
+  std::iota(out.input_index.begin(), out.input_index.end(), std::size_t(0));
+  Vec3_as_point_map map;
+  map.points = &read;
+  // The median policy splits at medians: the order depends on the points only, never on
+  // the number of threads.
+  CGAL::hilbert_sort<ConcurrencyTag>(out.input_index.begin(), out.input_index.end(),
+    CGAL::Spatial_sort_traits_adapter_3<CGAL::Simple_cartesian<double>, Vec3_as_point_map>(map),
+    CGAL::Hilbert_sort_median_policy());
+  out.points.resize(read.size());
+  for(std::size_t i = 0; i < read.size(); ++i)
+    out.points[i] = read[out.input_index[i]];
+  read = std::vector<Vec3>();
   out.index.template build<ConcurrencyTag>(out.points);
 }
 

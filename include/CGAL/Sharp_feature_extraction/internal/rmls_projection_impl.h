@@ -160,7 +160,7 @@ public:
 private:
   std::vector<bool> m_assigned, m_member;
   std::vector<std::size_t> m_free, m_centers, m_seed;
-  std::vector<double> m_distance, m_residual;
+  std::vector<double> m_distance, m_center_distance, m_selection;
   std::vector<std::pair<double, std::size_t>> m_ranked;
 
   // Least-residual seed: planes through small subsets around a few well spread centres.
@@ -175,30 +175,44 @@ private:
     const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : C::min_surface_points;
     const std::size_t seed_size = degree >= 2 ? C::quadric_seed_size : C::plane_seed_size;
     const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(seed_size, m_free.size() / 3)));
-    // Farthest point sampling of the centres, starting from the free point nearest the candidate.
-    m_centers.assign(1, m_free.front());
-    m_distance.assign(m_free.size(), std::numeric_limits<double>::infinity());
-    while(m_centers.size() < (std::min)(C::seed_trials, m_free.size()))
+    // Farthest point sampling of the centres, starting from the free point nearest the candidate;
+    // the distances of the free points to each centre are kept for the seed selection below.
+    const std::size_t free_count = m_free.size();
+    const std::size_t center_count = (std::min)(C::seed_trials, free_count);
+    m_centers.assign(1, 0);
+    m_distance.assign(free_count, std::numeric_limits<double>::infinity());
+    m_center_distance.resize(center_count * free_count);
+    for(std::size_t c = 0; c < center_count; ++c)
     {
-      std::size_t best = 0;
-      for(std::size_t j = 0; j < m_free.size(); ++j)
+      const Vec3& center = local[m_free[m_centers[c]]];
+      double* row = &m_center_distance[c * free_count];
+      std::size_t farthest = 0;
+      for(std::size_t j = 0; j < free_count; ++j)
       {
-        m_distance[j] = (std::min)(m_distance[j], (local[m_free[j]] - local[m_centers.back()]).squaredNorm());
-        if(m_distance[j] > m_distance[best])
-          best = j;
+        row[j] = (local[m_free[j]] - center).squaredNorm();
+        m_distance[j] = (std::min)(m_distance[j], row[j]);
+        if(m_distance[j] > m_distance[farthest])
+          farthest = j;
       }
-      m_centers.push_back(m_free[best]);
+      if(c + 1 < center_count)
+        m_centers.push_back(farthest);
     }
     double best_score = std::numeric_limits<double>::infinity();
-    for(std::size_t center : m_centers)
+    for(std::size_t c = 0; c < center_count; ++c)
     {
-      m_ranked.clear();
-      for(std::size_t j : m_free)
-        m_ranked.emplace_back((local[j] - local[center]).squaredNorm(), j);
-      std::nth_element(m_ranked.begin(), m_ranked.begin() + (size - 1), m_ranked.end());
+      // The seed: the `size` free points nearest the centre (ties go to the first in `m_free`).
+      const double* row = &m_center_distance[c * free_count];
+      m_selection.assign(row, row + free_count);
+      std::nth_element(m_selection.begin(), m_selection.begin() + (size - 1), m_selection.end());
+      const double limit = m_selection[size - 1];
+      std::size_t below = 0;
+      for(std::size_t j = 0; j < free_count; ++j)
+        below += row[j] < limit ? 1 : 0;
+      std::size_t at_limit = size - below;
       m_seed.clear();
-      for(std::size_t j = 0; j < size; ++j)
-        m_seed.push_back(m_ranked[j].second);
+      for(std::size_t j = 0; j < free_count; ++j)
+        if(row[j] < limit || (row[j] == limit && at_limit > 0 && at_limit--))
+          m_seed.push_back(m_free[j]);
       Local_frame frame;
       Vec3 spread;
       Height_field plane;
@@ -488,12 +502,13 @@ inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample>
   return kept;
 }
 
-/// Stage 2 on every candidate. Returns false if cancelled.
+/// Stage 2 on every candidate (positions in `input.points`). Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool rmls_project(const std::vector<Vec3>& points, const Point_index& index,
-                  const std::vector<std::size_t>& candidates, const Scales& scales,
-                  const Settings& settings, Progress progress, Feature_samples& out)
+bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& candidates,
+                  const Scales& scales, const Settings& settings, Progress progress,
+                  Feature_samples& out)
 {
+  const std::vector<Vec3>& points = input.points;
   out = Feature_samples();
   std::vector<Projection> projections(candidates.size());
   if(scales.rmls_neighbors == 0)
@@ -504,11 +519,11 @@ bool rmls_project(const std::vector<Vec3>& points, const Point_index& index,
        for(std::size_t c = first; c < last; ++c)
        {
          const Vec3& p = points[candidates[c]];
-         index.nearest(p, scales.rmls_neighbors, neighbors);
+         input.index.nearest(p, scales.rmls_neighbors, neighbors);
          search.local.clear();
          for(std::size_t j : neighbors)
            search.local.push_back(points[j]);
-         projections[c] = project_candidate(search, p, candidates[c], scales, settings);
+         projections[c] = project_candidate(search, p, input.input_index[candidates[c]], scales, settings);
        }
      }))
     return false;
