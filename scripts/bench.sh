@@ -2,7 +2,7 @@
 # Benchmark of sharp feature extraction: accuracy, robustness and speed against ground truth
 # creases of CAD meshes and against CGAL's VCM, written up in one report.
 #
-#   scripts/bench.sh            full run (about 1.5 h on 2 cores): benchmark/results/REPORT.md
+#   scripts/bench.sh            full run (about 80 min on 2 cores): benchmark/results/REPORT.md
 #   scripts/bench.sh --quick    smoke run (under 5 min once built): out/bench_quick/report/REPORT.md
 #
 # Options:

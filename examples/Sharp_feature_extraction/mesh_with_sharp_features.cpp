@@ -343,9 +343,6 @@ int main(int argc, char* argv[])
               << "time: extraction " << seconds_extraction << " s, normals " << result.seconds_normals
               << " s, Poisson " << result.seconds_poisson << " s, Mesh_3 " << result.seconds_meshing
               << " s, total " << seconds_total << " s\n";
-    if(result.mesh_attempts > 1)
-      std::cout << "Mesh_3 failed with " << result.mesh_attempts - 1
-                << " choice(s) of initial points and was run again\n";
     if(!result.error.empty())
       std::cout << "warning: " << result.error << " (the mesh may be incomplete)\n";
   }
@@ -360,7 +357,7 @@ int main(int argc, char* argv[])
           << "\ntriangles=" << check.triangles << "\nvertices=" << check.vertices
           << "\nclosed=" << check.closed() << "\nmanifold=" << check.manifold()
           << "\nself_intersecting=" << check.self_intersecting()
-          << "\nstopped=" << result.stopped << "\nmesh_attempts=" << result.mesh_attempts
+          << "\nstopped=" << result.stopped
           << "\nseconds_extraction=" << seconds_extraction << "\nseconds_normals=" << result.seconds_normals
           << "\nseconds_poisson=" << result.seconds_poisson << "\nseconds_meshing=" << result.seconds_meshing
           << "\nseconds_total=" << seconds_total << "\n";

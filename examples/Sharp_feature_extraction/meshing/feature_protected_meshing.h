@@ -27,7 +27,6 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
-#include <algorithm>
 #include <map>
 #include <mutex>
 #include <string>
@@ -52,10 +51,6 @@ struct Surface_meshing_limits
   std::size_t maximal_number_of_vertices = 0; ///< 0: none
   double relative_error_bound = 1e-6;     ///< of the surface intersections, relative to the bounding sphere
   unsigned seed = 0;                      ///< of Mesh_3's random initial points
-  /// Mesh_3 5.5 sometimes fails an assertion of its facet refinement ("already inserted on
-  /// surface") for one choice of random initial points: it is run again with the next seeds,
-  /// this many times in all.
-  unsigned attempts = 3;
 };
 
 /// A closed surface as a triangle soup, facets oriented outward.
@@ -72,7 +67,6 @@ struct Surface_meshing_result
   Triangle_soup_3<Point_3> surface;
   std::size_t protected_vertices = 0; ///< vertices Mesh_3 put on the feature curves
   bool stopped = false;               ///< the time or vertex limit was reached
-  unsigned attempts = 0;              ///< Mesh_3 runs (more than 1 when a run failed)
   std::string error;                  ///< empty on success
 };
 
@@ -97,7 +91,12 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
   namespace params = CGAL::parameters;
 
   Surface_meshing_result<Point_3> result;
+  CGAL::Random random(limits.seed);
   std::function<double(const Point_3&)> f = function;
+  Domain domain(Implicit_domain::create_implicit_mesh_domain(
+    f, bound, params::relative_error_bound = limits.relative_error_bound, params::p_rng = &random));
+  if(!features.empty())
+    domain.add_features(features.begin(), features.end());
 
   Criteria criteria(params::edge_size = sizes.edge_size, params::facet_angle = sizes.facet_angle,
                     params::facet_size = sizes.facet_size,
@@ -122,27 +121,14 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
 
   CGAL::Mesh_error_code error_code = CGAL::CGAL_MESH_3_NO_ERROR;
   C3t3 c3t3;
-  for(unsigned attempt = 0; attempt < (std::max)(1u, limits.attempts) && !stop; ++attempt) {
-    ++result.attempts;
-    result.error.clear();
-    error_code = CGAL::CGAL_MESH_3_NO_ERROR;
-    CGAL::Random random(limits.seed + attempt);
-    Domain domain(Implicit_domain::create_implicit_mesh_domain(
-      f, bound, params::relative_error_bound = limits.relative_error_bound, params::p_rng = &random));
-    if(!features.empty())
-      domain.add_features(features.begin(), features.end());
-    try {
-      c3t3 = CGAL::make_mesh_3<C3t3>(
-        domain, criteria, params::no_perturb(), params::no_exude(), params::manifold(),
-        params::mesh_3_options(params::maximal_number_of_vertices = limits.maximal_number_of_vertices,
-                               params::pointer_to_error_code = &error_code,
-                               params::pointer_to_stop_atomic_boolean = &stop));
-      break;
-    } catch(const std::exception& e) {
-      result.error = std::string("Mesh_3 failed (") + std::to_string(result.attempts) +
-                     (result.attempts == 1 ? " attempt): " : " attempts): ") + e.what();
-      c3t3 = C3t3();
-    }
+  try {
+    c3t3 = CGAL::make_mesh_3<C3t3>(
+      domain, criteria, params::no_perturb(), params::no_exude(), params::manifold(),
+      params::mesh_3_options(params::maximal_number_of_vertices = limits.maximal_number_of_vertices,
+                             params::pointer_to_error_code = &error_code,
+                             params::pointer_to_stop_atomic_boolean = &stop));
+  } catch(const std::exception& e) {
+    result.error = std::string("Mesh_3 failed: ") + e.what();
   }
   {
     std::lock_guard<std::mutex> lock(mutex);

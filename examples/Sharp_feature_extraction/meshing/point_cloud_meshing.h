@@ -79,7 +79,6 @@ struct Point_cloud_meshing_result
   std::vector<CGAL::Feature_polyline<GeomTraits>> curves; ///< the curves after the repair
   std::vector<std::string> curve_problems; ///< what is still wrong after the repair
   std::size_t protected_curves = 0, protected_vertices = 0;
-  unsigned mesh_attempts = 0; ///< Mesh_3 runs (see `Surface_meshing_limits::attempts`)
   std::size_t corrected_normals = 0, unoriented_points = 0;
   std::size_t projected_vertices = 0; ///< curve vertices moved onto the fitted crease
   double seconds_normals = 0, seconds_poisson = 0, seconds_meshing = 0;
@@ -305,7 +304,6 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   result.curves = std::move(curves);
   result.protected_vertices = mesh.protected_vertices;
   result.stopped = mesh.stopped;
-  result.mesh_attempts = mesh.attempts;
   result.error = mesh.error;
   return result;
 }
