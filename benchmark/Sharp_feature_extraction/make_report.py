@@ -549,7 +549,6 @@ def write_report(data, report, quick):
             if r.get("method") != "ours" or r.get("status"):
                 continue
             v = vcm_speed.get(r["label"])
-            per_point = 1e6 / r["points"]
             rows.append([f"{r['points']:,}", pct(r.get("noise", 0), 2), r.get("threads") or "all",
                          secs(r["time_candidates"]), secs(r["time_projection"]), secs(r["time_smoothing"]),
                          secs(r["time_growing"]), secs(r["time_completion"]), f"**{secs(r['time_total'])}**",

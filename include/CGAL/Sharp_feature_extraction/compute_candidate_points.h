@@ -66,9 +66,7 @@ bool compute_candidate_points(
   sfe::Candidate_output out;
   const bool completed = sfe::compute_candidates<ConcurrencyTag>(input, settings,
                                                                  sfe::Progress(settings.callback), out);
-  candidates.residuals = input.in_input_order<typename GT::FT>(out.residuals);
-  candidates.indices = input.input_indices(out.candidates);
-  candidates.scales = sfe::to_public<typename GT::FT>(out.scales);
+  candidates = sfe::to_public<GT>(input, out);
   return completed;
 }
 

@@ -46,9 +46,7 @@ bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_fe
   if(!compute_candidates<ConcurrencyTag>(input, settings, progress.sub(0, progress_end_of_stage[0]), candidates))
     return false;
   const Scales& scales = candidates.scales;
-  result.candidates.residuals = input.in_input_order<typename GT::FT>(candidates.residuals);
-  result.candidates.indices = input.input_indices(candidates.candidates);
-  result.candidates.scales = to_public<typename GT::FT>(scales);
+  result.candidates = to_public<GT>(input, candidates);
   result.timings.candidates = timer.time();
 
   timer.reset();

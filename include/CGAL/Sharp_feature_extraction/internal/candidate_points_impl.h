@@ -197,6 +197,17 @@ bool compute_candidates(const Indexed_input& input, const Settings& settings, Pr
   return true;
 }
 
+/// The public form of `out`: residuals and candidate indices in input order.
+template <typename GT>
+Candidate_points<GT> to_public(const Indexed_input& input, const Candidate_output& out)
+{
+  Candidate_points<GT> candidates;
+  candidates.residuals = input.in_input_order<typename GT::FT>(out.residuals);
+  candidates.indices = input.input_indices(out.candidates);
+  candidates.scales = to_public<typename GT::FT>(out.scales);
+  return candidates;
+}
+
 } // namespace internal
 } // namespace Sharp_feature_extraction
 } // namespace CGAL

@@ -92,12 +92,7 @@ struct Indexed_input
   /// The input positions of the points at `positions`, ascending.
   std::vector<std::size_t> input_indices(const std::vector<std::size_t>& positions) const
   {
-    std::vector<std::size_t> out;
-    out.reserve(positions.size());
-    for(std::size_t i : positions)
-      out.push_back(input_index[i]);
-    std::sort(out.begin(), out.end());
-    return out;
+    return sorted_lookup(input_index, positions);
   }
 
   /// The positions in `points` of the input points `indices`, ascending (spatial order).
@@ -106,12 +101,7 @@ struct Indexed_input
     std::vector<std::size_t> position_of(input_index.size());
     for(std::size_t i = 0; i < input_index.size(); ++i)
       position_of[input_index[i]] = i;
-    std::vector<std::size_t> out;
-    out.reserve(indices.size());
-    for(std::size_t i : indices)
-      out.push_back(position_of[i]);
-    std::sort(out.begin(), out.end());
-    return out;
+    return sorted_lookup(position_of, indices);
   }
 
   /// `values` (one per point, in spatial order) in input order.
@@ -121,6 +111,19 @@ struct Indexed_input
     std::vector<FT> out(values.size());
     for(std::size_t i = 0; i < values.size(); ++i)
       out[input_index[i]] = FT(values[i]);
+    return out;
+  }
+
+private:
+  /// `table[k]` for every `k` of `keys`, ascending.
+  static std::vector<std::size_t> sorted_lookup(const std::vector<std::size_t>& table,
+                                                const std::vector<std::size_t>& keys)
+  {
+    std::vector<std::size_t> out;
+    out.reserve(keys.size());
+    for(std::size_t k : keys)
+      out.push_back(table[k]);
+    std::sort(out.begin(), out.end());
     return out;
   }
 };
