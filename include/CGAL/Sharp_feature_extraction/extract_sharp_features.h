@@ -51,7 +51,7 @@ bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_fe
 
   timer.reset();
   Feature_samples features;
-  if(!rmls_project<ConcurrencyTag>(input, candidates.candidates, scales, settings,
+  if(!rmls_project<ConcurrencyTag>(input, candidates.candidates, candidates.residuals, scales, settings,
                                    progress.sub(progress_end_of_stage[0], progress_end_of_stage[1]), features))
     return false;
   result.projected = to_public<GT>(features, scales);

@@ -25,8 +25,18 @@ namespace CGAL {
 /// radius are grouped, keeping the one closest to the weighted average (weights 1/|c - e|);
 /// groups of fewer than 3 corner points are dropped.
 ///
+/// On noise-free data, neighbouring candidates share their surfaces: the candidates are grouped
+/// by grid cells of 1.5 spacings, the forward search runs around the candidate of largest
+/// residual in each cell (the next ones if it finds fewer than two surfaces, up to three), and
+/// every candidate of the cell that lies on one of those surfaces is projected onto them (the
+/// others search their own). Every candidate still gives its own edge point, for about one
+/// forward search per cell. On noisy data every candidate searches its own surfaces, so that
+/// its edge point is an independent estimate for the smoothing of stage 3 to average.
+///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
-/// \param candidates the output of `compute_candidate_points()`: its indices and scales are used.
+/// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which
+///   rank the candidates of a cell; without one residual per point, they rank by index) and
+///   scales are used.
 /// \param projected receives the edge and corner points.
 /// \param np optional named parameters: `point_map`, `geom_traits`, `callback` as in
 ///   `compute_candidate_points()`, and
@@ -54,8 +64,9 @@ bool rmls_project_candidates(
       throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
   const sfe::Scales scales = sfe::to_internal(candidates.scales);
   sfe::Feature_samples out;
-  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, input.positions(candidates.indices), scales, settings,
-                                                           sfe::Progress(settings.callback), out);
+  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, input.positions(candidates.indices),
+                                                           input.in_spatial_order(candidates.residuals), scales,
+                                                           settings, sfe::Progress(settings.callback), out);
   projected = sfe::to_public<GT>(out, scales);
   return completed;
 }

@@ -6,6 +6,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
 
+#include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
 #include <CGAL/Sharp_feature_extraction/internal/conversions.h>
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
@@ -42,6 +43,12 @@ constexpr double rmls_tolerance_per_spacing = 0.05;
 constexpr std::size_t spacing_neighbor = 6;
 /// At most this many points are used to estimate spacing, noise and neighbourhood radii.
 constexpr std::size_t scale_sample_size = 20000;
+
+/// Whether the noise dominates the sampling (see `noise_ratio_for_planes`).
+inline bool noise_dominates(const Scales& scales)
+{
+  return scales.noise > noise_ratio_for_planes * scales.spacing;
+}
 
 /// Stage-1 results, indexed like `Indexed_input::points` (spatial order).
 struct Candidate_output
@@ -178,14 +185,10 @@ bool compute_candidates(const Indexed_input& input, const Settings& settings, Pr
   const int degree = settings.degree_fitting;
   std::vector<double>& residuals = out.residuals;
   Progress fit_progress = progress.sub(0.05, 1);
-  if(!parallel_blocks<ConcurrencyTag>(n, fit_progress, [&](std::size_t first, std::size_t last) {
-       std::vector<std::size_t> neighbors;
-       for(std::size_t i = first; i < last; ++i)
-       {
-         index.nearest(points[i], k, neighbors, false); // the fit does not need them sorted
+  if(!for_each_neighborhood<ConcurrencyTag>(points, index, k, fit_progress,
+       [&](std::size_t i, const std::vector<std::size_t>& neighbors) {
          residuals[i] = fit_residuals(points, neighbors, degree).max_residual;
-       }
-     }))
+       }))
     return false;
 
   out.scales.residual_threshold = settings.residual_threshold >= 0

@@ -114,6 +114,18 @@ struct Indexed_input
     return out;
   }
 
+  /// `values` (one per input point, in input order) in spatial order; zeros when `values`
+  /// does not have one value per point.
+  template <typename FT>
+  std::vector<double> in_spatial_order(const std::vector<FT>& values) const
+  {
+    std::vector<double> out(input_index.size(), 0.);
+    if(values.size() == input_index.size())
+      for(std::size_t i = 0; i < input_index.size(); ++i)
+        out[i] = CGAL::to_double(values[input_index[i]]);
+    return out;
+  }
+
 private:
   /// `table[k]` for every `k` of `keys`, ascending.
   static std::vector<std::size_t> sorted_lookup(const std::vector<std::size_t>& table,

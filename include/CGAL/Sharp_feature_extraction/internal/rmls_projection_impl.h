@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -370,24 +371,22 @@ inline double distance_to_members(const Forward_search& search, const Rmls_surfa
 /// the sampling (a quadric then fits the noise and bends across the crease).
 inline int surface_degree(const Scales& scales, const Settings& settings)
 {
-  return scales.noise > noise_ratio_for_planes * scales.spacing ? 1 : settings.degree_fitting;
+  return noise_dominates(scales) ? 1 : settings.degree_fitting;
 }
 
-/// The RMLS projection of one candidate whose neighbourhood is in `search.local`.
-inline Projection project_candidate(Forward_search& search, const Vec3& p, std::size_t source,
-                                    const Scales& scales, const Settings& settings)
+/// The distinct smooth surfaces around the candidate `p`, whose neighbourhood is in
+/// `search.local`: the forward search, nearly parallel surfaces merged, and the competitive
+/// refinement. Fewer than two surfaces means no feature at `p`.
+inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, const Vec3& p,
+                                                      const Scales& scales, const Settings& settings)
 {
   typedef Forward_search_constants C;
-  Projection result;
   search.run(scales.rmls_tolerance, surface_degree(scales, settings));
-  std::vector<Rmls_surface>& surfaces = search.surfaces;
   const double radius = (search.local.back() - p).norm();
   const double cos_sharp = std::cos(radians(settings.sharpness_angle));
-  const double step_tolerance = C::newton_step_tolerance * scales.spacing;
-
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
   std::vector<Rmls_surface*> distinct;
-  for(Rmls_surface& s : surfaces)
+  for(Rmls_surface& s : search.surfaces)
   {
     const Vec3 n = s.fit.normal(p);
     bool parallel = false;
@@ -399,11 +398,30 @@ inline Projection project_candidate(Forward_search& search, const Vec3& p, std::
   if(distinct.size() >= 2)
     search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings), C::refinement_rounds,
                   p, C::fit_bandwidth * radius);
-  distinct.erase(std::remove_if(distinct.begin(), distinct.end(), [&](const Rmls_surface* s) {
-                   return s->members.size() < C::min_surface_points; }), distinct.end());
-  if(distinct.size() < 2)
-    return result;
-  // The surfaces closest to the candidate define its edge (and corner).
+  std::vector<const Rmls_surface*> kept;
+  for(const Rmls_surface* s : distinct)
+    if(s->members.size() >= C::min_surface_points)
+      kept.push_back(s);
+  if(kept.size() < 2)
+    kept.clear();
+  return kept;
+}
+
+/// The projection of `p` onto the intersections of `surfaces` (at least two, found by
+/// `find_surfaces()` around a candidate at most a few spacings from `p`, whose neighbourhood
+/// is in `search.local`): an edge point on the two surfaces closest to `p`, and a corner point
+/// if a third one meets them.
+inline Projection project_on_surfaces(const Forward_search& search, std::vector<const Rmls_surface*> distinct,
+                                      const Vec3& p, std::size_t source, const Scales& scales,
+                                      const Settings& settings)
+{
+  typedef Forward_search_constants C;
+  Projection result;
+  // The neighbourhood is sorted by distance to its candidate, which comes first.
+  const double radius = (search.local.back() - search.local.front()).norm();
+  const double cos_sharp = std::cos(radians(settings.sharpness_angle));
+  const double step_tolerance = C::newton_step_tolerance * scales.spacing;
+  // The surfaces closest to the point define its edge (and corner).
   std::stable_sort(distinct.begin(), distinct.end(), [&](const Rmls_surface* a, const Rmls_surface* b) {
     return a->fit.residual(p) < b->fit.residual(p);
   });
@@ -502,35 +520,149 @@ inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample>
   return kept;
 }
 
-/// Stage 2 on every candidate (positions in `input.points`). Returns false if cancelled.
+/// Side of the grid cells that group the candidates of noise-free data, relative to the
+/// sampling spacing.
+constexpr double candidate_cell_per_spacing = 1.5;
+/// Candidates of a cell whose forward search is tried, in turn, until one finds surfaces.
+constexpr std::size_t surface_searches_per_cell = 3;
+
+/// The candidates grouped by the cells of a grid. The candidates form a band several points
+/// wide along each crease, and on noise-free data the surfaces that the forward search finds
+/// around one of them serve its neighbours as well: stage 2 searches the surfaces around the
+/// first candidate of a cell (the next one if it finds fewer than two, up to
+/// `surface_searches_per_cell`) and projects every candidate of the cell onto them. Every
+/// candidate still gives its own edge point, for about one forward search per cell.
+struct Candidate_cells
+{
+  /// The candidates, cell by cell; in a cell by decreasing stage-1 residual (the best placed
+  /// on the crease first), then by position.
+  std::vector<std::size_t> members;
+  /// Cell `c` holds `members[start[c]]` to `members[start[c + 1] - 1]`.
+  std::vector<std::size_t> start;
+
+  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+  std::size_t size(std::size_t c) const { return start[c + 1] - start[c]; }
+  std::size_t member(std::size_t c, std::size_t rank) const { return members[start[c] + rank]; }
+};
+
+/// Groups `candidates` (positions in `points`) by cells of side `cell`, with the stage-1
+/// `residuals` of every point. A side of 0 puts every candidate in a cell of its own.
+inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const std::vector<std::size_t>& candidates,
+                                        const std::vector<double>& residuals, double cell)
+{
+  Candidate_cells cells;
+  if(candidates.empty())
+    return cells;
+  Vec3 low = points[candidates.front()];
+  for(std::size_t c : candidates)
+    low = low.cwiseMin(points[c]);
+  // 21 bits per cell coordinate: a wider cloud (far outliers) aliases cells 2^21 cells apart.
+  // Candidates far from the surfaces of their cell then search their own, or fail the support
+  // test of the projection: aliasing costs time, never wrong edge points.
+  const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
+  auto key = [&](std::size_t c) -> std::uint64_t {
+    if(!(cell > 0))
+      return c;
+    const Vec3 g = (points[c] - low) / cell;
+    return ((std::uint64_t(g[0]) & mask) << 42) | ((std::uint64_t(g[1]) & mask) << 21) | (std::uint64_t(g[2]) & mask);
+  };
+  struct Keyed { std::uint64_t key; double residual; std::size_t position; };
+  std::vector<Keyed> keyed;
+  keyed.reserve(candidates.size());
+  for(std::size_t c : candidates)
+    keyed.push_back(Keyed{key(c), residuals.empty() ? 0. : residuals[c], c});
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+    if(a.key != b.key)
+      return a.key < b.key;
+    if(a.residual != b.residual)
+      return a.residual > b.residual;
+    return a.position < b.position;
+  });
+  for(std::size_t i = 0; i < keyed.size(); ++i)
+  {
+    if(i == 0 || keyed[i].key != keyed[i - 1].key)
+      cells.start.push_back(i);
+    cells.members.push_back(keyed[i].position);
+  }
+  cells.start.push_back(keyed.size());
+  return cells;
+}
+
+/// Stage 2 on the candidates (positions in `input.points`, with the stage-1 `residuals` of
+/// every point in spatial order). Returns false if cancelled.
 template <typename ConcurrencyTag>
 bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& candidates,
-                  const Scales& scales, const Settings& settings, Progress progress,
-                  Feature_samples& out)
+                  const std::vector<double>& residuals, const Scales& scales, const Settings& settings,
+                  Progress progress, Feature_samples& out)
 {
   const std::vector<Vec3>& points = input.points;
   out = Feature_samples();
-  std::vector<Projection> projections(candidates.size());
   if(scales.rmls_neighbors == 0)
     return progress.report(1.);
-  if(!parallel_blocks<ConcurrencyTag>(candidates.size(), progress, [&](std::size_t first, std::size_t last) {
+  // On noisy data each candidate searches its own surfaces: its edge point is then an
+  // independent estimate, and the smoothing of stage 3 averages the noise out of them.
+  const Candidate_cells cells =
+    group_candidates(points, candidates, residuals, noise_dominates(scales) ? 0. : candidate_cell_per_spacing * scales.spacing);
+  // Projections of the cells' members, in the order of `cells.members`.
+  std::vector<Projection> projections(cells.members.size());
+  if(!parallel_blocks<ConcurrencyTag>(cells.size(), progress, [&](std::size_t first, std::size_t last) {
        Forward_search search;
-       std::vector<std::size_t> neighbors;
-       for(std::size_t c = first; c < last; ++c)
-       {
-         const Vec3& p = points[candidates[c]];
-         input.index.nearest(p, scales.rmls_neighbors, neighbors);
+       std::vector<std::size_t> neighbors, own_search;
+       // The surfaces around the candidate at `position` (in `search`).
+       auto surfaces_around = [&](std::size_t position) {
+         input.index.nearest(points[position], scales.rmls_neighbors, neighbors);
          search.local.clear();
          for(std::size_t j : neighbors)
            search.local.push_back(points[j]);
-         projections[c] = project_candidate(search, p, input.input_index[candidates[c]], scales, settings);
+         return find_surfaces(search, points[position], scales, settings);
+       };
+       auto project = [&](std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces) {
+         const std::size_t q = cells.member(cell, rank);
+         projections[cells.start[cell] + rank] =
+           project_on_surfaces(search, surfaces, points[q], input.input_index[q], scales, settings);
+       };
+       for(std::size_t cell = first; cell < last; ++cell)
+       {
+         const std::size_t size = cells.size(cell);
+         for(std::size_t rank = 0; rank < (std::min)(size, surface_searches_per_cell); ++rank)
+         {
+           const std::vector<const Rmls_surface*> surfaces = surfaces_around(cells.member(cell, rank));
+           if(surfaces.empty())
+             continue;
+           // The surfaces found here serve the rest of the cell, except the candidates that lie
+           // on none of them (the other side of a thin wall, say): those search their own.
+           own_search.clear();
+           for(std::size_t other = rank; other < size; ++other)
+           {
+             const Vec3& q = points[cells.member(cell, other)];
+             double closest = std::numeric_limits<double>::infinity();
+             for(const Rmls_surface* s : surfaces)
+               closest = (std::min)(closest, s->fit.residual(q));
+             if(closest <= scales.rmls_tolerance)
+               project(cell, other, surfaces);
+             else
+               own_search.push_back(other);
+           }
+           for(std::size_t other : own_search)
+           {
+             const std::vector<const Rmls_surface*> own = surfaces_around(cells.member(cell, other));
+             if(!own.empty())
+               project(cell, other, own);
+           }
+           break;
+         }
        }
      }))
     return false;
+  // Edge and corner points in the order of their candidates.
+  std::vector<std::size_t> order(projections.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells.members[a] < cells.members[b]; });
 
   std::vector<Corner_sample> corners;
-  for(const Projection& pr : projections)
+  for(std::size_t i : order)
   {
+    const Projection& pr = projections[i];
     if(pr.has_edge)
       out.edges.push_back(pr.edge);
     if(pr.has_corner)

@@ -1,0 +1,112 @@
+// The searches behind the speed of stages 1 and 2 must not change what they find: the gridded
+// neighbourhoods of stage 1 are exactly the k nearest points (as the k-d tree finds them), on
+// clean, noisy, flat and duplicated clouds; and the candidate cells of stage 2 hold every
+// candidate exactly once, within one cell of side the given size.
+
+#include "analytic_shapes.h"
+
+#include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
+#include <CGAL/Sharp_feature_extraction/internal/rmls_projection_impl.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace sfe = CGAL::Sharp_feature_extraction::internal;
+using namespace sfe_test;
+
+std::vector<sfe::Vec3> to_vec3(const std::vector<Vec>& v)
+{
+  std::vector<sfe::Vec3> out;
+  for(const Vec& p : v)
+    out.emplace_back(p.x, p.y, p.z);
+  return out;
+}
+
+/// Every neighbourhood of `for_each_neighborhood()` against the k-d tree's: same size, and
+/// the same distance to the farthest member (the sets may differ only among points at exactly
+/// that distance). Returns the number of points checked.
+template <typename ConcurrencyTag>
+std::size_t check_neighborhoods(const std::vector<sfe::Vec3>& points, std::size_t k)
+{
+  sfe::Point_index index;
+  index.build<CGAL::Sequential_tag>(points);
+  std::vector<std::vector<std::size_t>> found(points.size());
+  sfe::Progress progress;
+  REQUIRE(sfe::for_each_neighborhood<ConcurrencyTag>(points, index, k, progress,
+    [&](std::size_t i, const std::vector<std::size_t>& neighbors) { found[i] = neighbors; }));
+  std::vector<std::size_t> expected;
+  std::size_t mismatches = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    index.nearest(points[i], k, expected);
+    std::vector<std::size_t> got = found[i];
+    std::sort(got.begin(), got.end());
+    const bool unique = std::adjacent_find(got.begin(), got.end()) == got.end();
+    double farthest = 0;
+    for(std::size_t j : got)
+      farthest = (std::max)(farthest, (points[j] - points[i]).norm());
+    const double expected_farthest = (points[expected.back()] - points[i]).norm();
+    if(got.size() != expected.size() || !unique || farthest != expected_farthest)
+      ++mismatches;
+  }
+  CHECK(mismatches == 0);
+  return points.size();
+}
+
+} // namespace
+
+TEST_CASE("gridded neighbourhoods are exactly the k nearest points", "[neighbors]")
+{
+  const std::vector<sfe::Vec3> clean = to_vec3(sample(chamfered_box(), 20000, 0));
+  const std::vector<sfe::Vec3> noisy = to_vec3(sample(chamfered_box(), 20000, 0.01));
+  SECTION("clean, k = 36") { check_neighborhoods<CGAL::Sequential_tag>(clean, 36); }
+  SECTION("clean, k = 36, in parallel") { check_neighborhoods<CGAL::Parallel_if_available_tag>(clean, 36); }
+  SECTION("noisy, k = 164") { check_neighborhoods<CGAL::Sequential_tag>(noisy, 164); }
+  SECTION("flat") { check_neighborhoods<CGAL::Sequential_tag>(to_vec3(sample(square_plane(), 10000, 0)), 36); }
+  SECTION("every point four times")
+  {
+    std::vector<sfe::Vec3> repeated;
+    for(const sfe::Vec3& p : to_vec3(sample(unit_cube(), 5000, 0)))
+      repeated.insert(repeated.end(), 4, p);
+    check_neighborhoods<CGAL::Sequential_tag>(repeated, 36);
+  }
+  SECTION("fewer points than a neighbourhood") { check_neighborhoods<CGAL::Sequential_tag>(std::vector<sfe::Vec3>(clean.begin(), clean.begin() + 30), 36); }
+}
+
+TEST_CASE("candidate cells hold every candidate once, the best placed first", "[neighbors]")
+{
+  const std::vector<sfe::Vec3> points = to_vec3(sample(unit_cube(), 20000, 0));
+  std::vector<std::size_t> candidates;
+  std::vector<double> residuals(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    residuals[i] = double((i * 7919) % 1000); // arbitrary, with ties
+    if(i % 3 == 0)
+      candidates.push_back(i);
+  }
+  const double cell = 0.05;
+  const sfe::Candidate_cells cells = sfe::group_candidates(points, candidates, residuals, cell);
+  std::vector<std::size_t> members = cells.members;
+  std::sort(members.begin(), members.end());
+  CHECK(members == candidates);
+  for(std::size_t c = 0; c < cells.size(); ++c)
+  {
+    REQUIRE(cells.size(c) > 0);
+    sfe::Vec3 low = points[cells.member(c, 0)], high = low;
+    for(std::size_t r = 0; r < cells.size(c); ++r)
+    {
+      low = low.cwiseMin(points[cells.member(c, r)]);
+      high = high.cwiseMax(points[cells.member(c, r)]);
+      if(r > 0)
+        CHECK(residuals[cells.member(c, r - 1)] >= residuals[cells.member(c, r)]);
+    }
+    CHECK((high - low).maxCoeff() < cell);
+  }
+  // Size 0: one cell per candidate.
+  CHECK(sfe::group_candidates(points, candidates, residuals, 0.).size() == candidates.size());
+}
