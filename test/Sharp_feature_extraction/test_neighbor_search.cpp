@@ -35,9 +35,19 @@ std::size_t check_neighborhoods(const std::vector<sfe::Vec3>& points, std::size_
 {
   sfe::Point_index index;
   index.build<CGAL::Sequential_tag>(points);
+  // The cell side the pipeline would use: from the median distance to the k-th neighbour.
+  std::vector<double> radii;
+  std::vector<std::size_t> sample;
+  for(std::size_t i = 0; i < points.size(); i += 16)
+  {
+    index.nearest(points[i], k, sample);
+    radii.push_back((points[sample.back()] - points[i]).norm());
+  }
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  const double cell = sfe::neighborhood_cell_per_radius * radii[radii.size() / 2];
   std::vector<std::vector<std::size_t>> found(points.size());
   sfe::Progress progress;
-  REQUIRE(sfe::for_each_neighborhood<ConcurrencyTag>(points, index, k, progress,
+  REQUIRE(sfe::for_each_neighborhood<ConcurrencyTag>(points, index, k, cell, progress,
     [&](std::size_t i, const std::vector<std::size_t>& neighbors) { found[i] = neighbors; }));
   std::vector<std::size_t> expected;
   std::size_t mismatches = 0;

@@ -28,46 +28,54 @@ constexpr double neighborhood_guess_factor = 1.5;
 /// Below this many points, every query goes to the k-d tree.
 constexpr std::size_t smallest_gridded_set = 4096;
 
+/// Cell coordinates in a grid of side `cell` with its origin at `low`, offset by 1 (so that
+/// the cells around any cell have coordinates too), packed in one sortable key of 21 bits per
+/// coordinate. Coordinates beyond 21 bits wrap around.
+struct Grid_key
+{
+  static constexpr std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
+
+  static std::uint64_t pack(std::uint64_t x, std::uint64_t y, std::uint64_t z)
+  {
+    return ((x & mask) << 42) | ((y & mask) << 21) | (z & mask);
+  }
+  static std::uint64_t of(const Vec3& p, const Vec3& low, double cell)
+  {
+    const Vec3 g = (p - low) / cell;
+    return pack(std::uint64_t(g[0]) + 1, std::uint64_t(g[1]) + 1, std::uint64_t(g[2]) + 1);
+  }
+  static std::uint64_t x(std::uint64_t key) { return key >> 42; }
+  static std::uint64_t y(std::uint64_t key) { return (key >> 21) & mask; }
+  static std::uint64_t z(std::uint64_t key) { return key & mask; }
+};
+
 /// Calls `body(i, neighbors)` for every point `i` of `points` with its `k` nearest points of
 /// `points` (`i` included, in no particular order); `index` must index `points`. The points
-/// are put in cubic cells about as wide as a neighbourhood: the points of a cell share the
-/// candidates of the 27 cells around it, and their neighbourhoods are selected from those.
-/// A point whose k-th neighbour may lie outside them (closer to the border of the 27 cells
-/// than to its k-th candidate) is answered by the k-d tree, so that every neighbourhood is
-/// exact. This does the work of one tree query per point several times faster.
+/// are put in cubic cells of side `cell`, about as wide as a neighbourhood (see
+/// `neighborhood_cell_per_radius`): the points of a cell share the candidates of the 27 cells
+/// around it, and their neighbourhoods are selected from those. A point whose k-th neighbour
+/// may lie outside them (closer to the border of the 27 cells than to its k-th candidate) is
+/// answered by the k-d tree, so that every neighbourhood is exact, whatever `cell`. This does
+/// the work of one tree query per point several times faster. Small sets, a `cell` of 0 and
+/// grids too wide for `Grid_key` (far outliers) go to the k-d tree entirely.
 ///
 /// `body` runs concurrently for different points when `ConcurrencyTag` allows it. Returns false
 /// if `progress` was cancelled.
 template <typename ConcurrencyTag, typename Body>
 bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& index, std::size_t k,
-                           Progress& progress, const Body& body)
+                           double cell, Progress& progress, const Body& body)
 {
   const std::size_t n = points.size();
   k = (std::min)(k, n);
-  // The cell side: from the distance to the k-th neighbour at a regular sample of the points.
-  double cell = 0;
-  if(n >= smallest_gridded_set && k > 0)
-  {
-    const std::size_t stride = 64;
-    std::vector<double> radii;
-    std::vector<std::size_t> neighbors;
-    for(std::size_t i = 0; i < n; i += stride)
-    {
-      index.nearest(points[i], k, neighbors);
-      radii.push_back((points[neighbors.back()] - points[i]).norm());
-    }
-    std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
-    cell = neighborhood_cell_per_radius * radii[radii.size() / 2];
-  }
   Vec3 low = points.empty() ? Vec3::Zero() : points.front(), high = low;
   for(const Vec3& p : points)
   {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
-  // 20 bits per cell coordinate (one more for the neighbour offsets).
-  const double largest_cell_count = double(1 << 20) - 2;
-  if(!(cell > 0) || ((high - low) / cell).maxCoeff() >= largest_cell_count)
+  // Room for the offset and the cells around the last one.
+  const double largest_cell_count = double(Grid_key::mask) - 2;
+  if(n < smallest_gridded_set || k == 0 || !(cell > 0) || ((high - low) / cell).maxCoeff() >= largest_cell_count)
   {
     return parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
       std::vector<std::size_t> neighbors;
@@ -80,13 +88,9 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
   }
 
   // Points by cell (cell keys ascending, then positions).
-  auto coordinate = [&](const Vec3& p, int axis) {
-    return std::uint64_t((p[axis] - low[axis]) / cell) + 1;
-  };
-  auto key_of = [](std::uint64_t x, std::uint64_t y, std::uint64_t z) { return (x << 42) | (y << 21) | z; };
   std::vector<std::pair<std::uint64_t, std::size_t>> keyed(n);
   for(std::size_t i = 0; i < n; ++i)
-    keyed[i] = std::make_pair(key_of(coordinate(points[i], 0), coordinate(points[i], 1), coordinate(points[i], 2)), i);
+    keyed[i] = std::make_pair(Grid_key::of(points[i], low, cell), i);
   std::sort(keyed.begin(), keyed.end());
   std::vector<std::uint64_t> cell_key;
   std::vector<std::size_t> cell_start;
@@ -97,7 +101,6 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
       cell_start.push_back(i);
     }
   cell_start.push_back(n);
-  const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
 
   return parallel_blocks<ConcurrencyTag>(cell_key.size(), progress, [&](std::size_t first, std::size_t last) {
     std::vector<std::size_t> candidates, neighbors;
@@ -105,14 +108,14 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
     for(std::size_t c = first; c < last; ++c)
     {
       // The candidates: the points of the 27 cells around cell c.
-      const std::uint64_t x = cell_key[c] >> 42, y = (cell_key[c] >> 21) & mask, z = cell_key[c] & mask;
+      const std::uint64_t x = Grid_key::x(cell_key[c]), y = Grid_key::y(cell_key[c]), z = Grid_key::z(cell_key[c]);
       candidates.clear();
       for(std::uint64_t dx = x - 1; dx <= x + 1; ++dx)
         for(std::uint64_t dy = y - 1; dy <= y + 1; ++dy)
         {
           // The three cells along z are consecutive keys.
-          const auto from = std::lower_bound(cell_key.begin(), cell_key.end(), key_of(dx, dy, z - 1));
-          for(auto it = from; it != cell_key.end() && *it <= key_of(dx, dy, z + 1); ++it)
+          const auto from = std::lower_bound(cell_key.begin(), cell_key.end(), Grid_key::pack(dx, dy, z - 1));
+          for(auto it = from; it != cell_key.end() && *it <= Grid_key::pack(dx, dy, z + 1); ++it)
           {
             const std::size_t d = std::size_t(it - cell_key.begin());
             for(std::size_t j = cell_start[d]; j < cell_start[d + 1]; ++j)
@@ -152,9 +155,6 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
         {
           std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
           previous = ranked[k - 1].first;
-        }
-        if(exact)
-        {
           neighbors.clear();
           for(std::size_t r = 0; r < k; ++r)
             neighbors.push_back(ranked[r].second);

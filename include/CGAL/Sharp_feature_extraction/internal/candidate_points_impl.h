@@ -99,11 +99,13 @@ inline double median(std::vector<double> values)
 }
 
 /// Spacing, noise and neighbourhood sizes from a regular subsample of the cloud (regular in
-/// the spatial order of `points`), then the user's overrides. Returns false when the cloud has
-/// no extent (all points identical) or when cancelled (then `progress` is cancelled).
+/// the spatial order of `points`), then the user's overrides. `candidate_radius` receives the
+/// median distance to the `scales.candidate_neighbors`-th neighbour (the default growth
+/// radius, whatever the user's). Returns false when the cloud has no extent (all points
+/// identical) or when cancelled (then `progress` is cancelled).
 template <typename ConcurrencyTag>
 bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
-                   const Settings& settings, Progress progress, Scales& scales)
+                   const Settings& settings, Progress progress, Scales& scales, double& candidate_radius)
 {
   const std::size_t n = points.size();
   const std::size_t stride = (std::max<std::size_t>)(1, n / scale_sample_size);
@@ -160,7 +162,8 @@ bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
     ? settings.rmls_tolerance
     : (std::max)(rmls_tolerance_per_noise * scales.noise, rmls_tolerance_per_spacing * scales.spacing);
   scales.corner_radius = settings.corner_radius > 0 ? settings.corner_radius : median(r2);
-  scales.growth_radius = settings.growth_radius > 0 ? settings.growth_radius : median(r1);
+  candidate_radius = median(r1);
+  scales.growth_radius = settings.growth_radius > 0 ? settings.growth_radius : candidate_radius;
   scales.completion_distance = settings.completion_distance > 0
     ? settings.completion_distance : (std::max)(7 * scales.spacing, 3 * scales.growth_radius);
   return true;
@@ -177,15 +180,17 @@ bool compute_candidates(const Indexed_input& input, const Settings& settings, Pr
   out = Candidate_output();
   out.residuals.assign(n, 0.);
   Progress scale_progress = progress.sub(0, 0.05);
+  double candidate_radius = 0;
   if(n < minimum_number_of_points
-     || !derive_scales<ConcurrencyTag>(points, index, settings, scale_progress, out.scales))
+     || !derive_scales<ConcurrencyTag>(points, index, settings, scale_progress, out.scales, candidate_radius))
     return !scale_progress.cancelled() && progress.report(1.);
 
   const std::size_t k = out.scales.candidate_neighbors;
   const int degree = settings.degree_fitting;
   std::vector<double>& residuals = out.residuals;
   Progress fit_progress = progress.sub(0.05, 1);
-  if(!for_each_neighborhood<ConcurrencyTag>(points, index, k, fit_progress,
+  if(!for_each_neighborhood<ConcurrencyTag>(points, index, k, neighborhood_cell_per_radius * candidate_radius,
+                                            fit_progress,
        [&](std::size_t i, const std::vector<std::size_t>& neighbors) {
          residuals[i] = fit_residuals(points, neighbors, degree).max_residual;
        }))

@@ -8,6 +8,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RMLS_PROJECTION_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RMLS_PROJECTION_IMPL_H
 
+#include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
 #include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
@@ -556,16 +557,10 @@ inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const s
   Vec3 low = points[candidates.front()];
   for(std::size_t c : candidates)
     low = low.cwiseMin(points[c]);
-  // 21 bits per cell coordinate: a wider cloud (far outliers) aliases cells 2^21 cells apart.
+  // A cloud wider than `Grid_key` holds (far outliers) aliases cells 2^21 cells apart.
   // Candidates far from the surfaces of their cell then search their own, or fail the support
   // test of the projection: aliasing costs time, never wrong edge points.
-  const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
-  auto key = [&](std::size_t c) -> std::uint64_t {
-    if(!(cell > 0))
-      return c;
-    const Vec3 g = (points[c] - low) / cell;
-    return ((std::uint64_t(g[0]) & mask) << 42) | ((std::uint64_t(g[1]) & mask) << 21) | (std::uint64_t(g[2]) & mask);
-  };
+  auto key = [&](std::size_t c) -> std::uint64_t { return cell > 0 ? Grid_key::of(points[c], low, cell) : c; };
   struct Keyed { std::uint64_t key; double residual; std::size_t position; };
   std::vector<Keyed> keyed;
   keyed.reserve(candidates.size());
