@@ -1,7 +1,8 @@
 // The searches behind the speed of stages 1 and 2 must not change what they find: the gridded
 // neighbourhoods of stage 1 are exactly the k nearest points (as the k-d tree finds them), on
 // clean, noisy, flat and duplicated clouds; and the candidate cells of stage 2 hold every
-// candidate exactly once, within one cell of side the given size.
+// candidate exactly once, within one cell of side the given size; the surfaces of a cell serve
+// a candidate only where they explain its neighbourhood.
 
 #include "analytic_shapes.h"
 
@@ -119,4 +120,60 @@ TEST_CASE("candidate cells hold every candidate once, the best placed first", "[
   }
   // Size 0: one cell per candidate.
   CHECK(sfe::group_candidates(points, candidates, residuals, 0.).size() == candidates.size());
+}
+
+TEST_CASE("surfaces found around one candidate serve a neighbour only where they explain its neighbourhood",
+          "[projection]")
+{
+  // The neighbourhood (radius 1 around the origin, the candidate) of a crease along y between
+  // A = {z = 0, x >= 0} and B = {x = 0, z <= 0}, closed at y = -0.6 by a third face
+  // C = {y = -0.6, x >= 0, z <= 0}: a cube corner. The search found A and B.
+  const double step = 0.05, radius = 1, end = -0.6;
+  std::vector<sfe::Vec3> points;
+  for(int i = 0; i <= 20; ++i)
+    for(int j = -12; j <= 20; ++j)
+    {
+      points.emplace_back(i * step, j * step, 0);     // A
+      if(i > 0)
+        points.emplace_back(0, j * step, -i * step);  // B
+    }
+  for(int i = 1; i <= 20; ++i)
+    for(int k = 1; k <= 20; ++k)
+      points.emplace_back(i * step, end, -k * step);  // C
+  points.erase(std::remove_if(points.begin(), points.end(), [&](const sfe::Vec3& p) { return p.norm() > radius; }),
+               points.end());
+  std::stable_sort(points.begin(), points.end(), [](const sfe::Vec3& a, const sfe::Vec3& b) { return a.norm() < b.norm(); });
+  REQUIRE(points.front().norm() == 0);
+
+  sfe::Forward_search search;
+  search.local = points;
+  std::vector<sfe::Rmls_surface> found(2);
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    if(points[i].y() <= end + 1e-9)
+      continue;
+    if(std::abs(points[i].z()) < 1e-9)
+      found[0].members.push_back(i);
+    if(std::abs(points[i].x()) < 1e-9)
+      found[1].members.push_back(i);
+  }
+  for(sfe::Rmls_surface& s : found)
+  {
+    sfe::Local_frame frame;
+    sfe::Vec3 spread;
+    REQUIRE(sfe::principal_frame(points, s.members, frame, spread));
+    REQUIRE(s.fit.fit(points, s.members, frame, 1));
+  }
+  const std::vector<const sfe::Rmls_surface*> surfaces = {&found[0], &found[1]};
+  const double tolerance = 0.01;
+
+  // Along the crease, away from C: A and B are all there is.
+  CHECK(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.1, 0.2, 0), tolerance));
+  CHECK(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0, 0.1, -0.05), tolerance));
+  // Near C: its points are a surface that a search there would find.
+  CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.1, -0.45, 0), tolerance));
+  // Off both surfaces.
+  CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.1, 0.1, 0.1), tolerance));
+  // At the rim of the neighbourhood, which covers no ball around it.
+  CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.99, 0, 0), tolerance));
 }

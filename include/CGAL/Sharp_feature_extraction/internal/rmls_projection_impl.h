@@ -521,6 +521,36 @@ inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample>
   return kept;
 }
 
+/// Whether `surfaces`, found around the first point of `search.local`, also explain the
+/// neighbourhood of `q`, a point near it: `q` lies on one of them (within `tolerance`), and so
+/// do all but a fraction `Forward_search_constants::min_surface_fraction` of the points of
+/// `search.local` in the largest ball around `q` that this neighbourhood covers. The points
+/// left over could form a surface that a search around `q` would find (the other side of a
+/// thin wall, say): then `q` must search its own.
+inline bool surfaces_explain(const Forward_search& search, const std::vector<const Rmls_surface*>& surfaces,
+                             const Vec3& q, double tolerance)
+{
+  auto explained = [&](const Vec3& x) {
+    for(const Rmls_surface* s : surfaces)
+      if(s->fit.residual(x) <= tolerance)
+        return true;
+    return false;
+  };
+  if(!explained(q))
+    return false;
+  const Vec3& center = search.local.front();
+  const double reach = (search.local.back() - center).norm() - (q - center).norm();
+  std::size_t inside = 0, unexplained = 0;
+  for(const Vec3& x : search.local)
+    if(reach > 0 && (x - q).squaredNorm() <= reach * reach)
+    {
+      ++inside;
+      unexplained += explained(x) ? 0 : 1;
+    }
+  return inside >= Forward_search_constants::min_surface_points
+    && double(unexplained) < Forward_search_constants::min_surface_fraction * double(inside);
+}
+
 /// Side of the grid cells that group the candidates of noise-free data, relative to the
 /// sampling spacing.
 constexpr double candidate_cell_per_spacing = 1.5;
@@ -629,11 +659,7 @@ bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& ca
            own_search.clear();
            for(std::size_t other = rank; other < size; ++other)
            {
-             const Vec3& q = points[cells.member(cell, other)];
-             double closest = std::numeric_limits<double>::infinity();
-             for(const Rmls_surface* s : surfaces)
-               closest = (std::min)(closest, s->fit.residual(q));
-             if(closest <= scales.rmls_tolerance)
+             if(other == rank || surfaces_explain(search, surfaces, points[cells.member(cell, other)], scales.rmls_tolerance))
                project(cell, other, surfaces);
              else
                own_search.push_back(other);
