@@ -29,9 +29,10 @@ namespace CGAL {
 /// by grid cells of 1.5 spacings, the forward search runs around the candidate of largest
 /// residual in each cell (the next ones if it finds fewer than two surfaces, up to three), and
 /// every candidate of the cell that those surfaces explain (it lies on one of them, and so do
-/// 90% of the searched points around it) is projected onto them; the others search their own. Every candidate still gives its own edge point, for about one
-/// forward search per cell. On noisy data every candidate searches its own surfaces, so that
-/// its edge point is an independent estimate for the smoothing of stage 3 to average.
+/// more than 90% of the searched points around it) is projected onto them; the others search
+/// their own. Every candidate still gives its own edge point, for about one forward search per
+/// cell. On noisy data every candidate searches its own surfaces, so that its edge point is an
+/// independent estimate for the smoothing of stage 3 to average.
 ///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which

@@ -522,9 +522,10 @@ inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample>
 }
 
 /// Whether `surfaces`, found around the first point of `search.local`, also explain the
-/// neighbourhood of `q`, a point near it: `q` lies on one of them (within `tolerance`), and so
-/// do all but a fraction `Forward_search_constants::min_surface_fraction` of the points of
-/// `search.local` in the largest ball around `q` that this neighbourhood covers. The points
+/// neighbourhood of `q`, a point near it: `q` lies on one of them (within `tolerance`), and
+/// fewer than a fraction `Forward_search_constants::min_surface_fraction` of the points of
+/// `search.local` in the largest ball around `q` that this neighbourhood covers (at least
+/// `Forward_search_constants::min_surface_points` of them) lie on none. The points
 /// left over could form a surface that a search around `q` would find (the other side of a
 /// thin wall, say): then `q` must search its own.
 inline bool surfaces_explain(const Forward_search& search, const std::vector<const Rmls_surface*>& surfaces,
