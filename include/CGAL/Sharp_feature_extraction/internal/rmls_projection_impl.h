@@ -85,6 +85,11 @@ public:
   std::vector<Vec3> local;          // the neighbourhood, nearest to the candidate first
   std::vector<Rmls_surface> surfaces;
 
+  /// The centre of the neighbourhood: its point nearest to the candidate (the candidate itself).
+  const Vec3& center() const { return local.front(); }
+  /// The radius of the neighbourhood: the distance from its centre to its farthest point.
+  double radius() const { return (local.back() - local.front()).norm(); }
+
   /// Splits `local` into at most three smooth surfaces with tolerance `tolerance`. The search
   /// grows planes (`degree` 1): a quadric can bend across a shallow crease while it grows.
   void run(double tolerance, int degree)
@@ -383,7 +388,7 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
 {
   typedef Forward_search_constants C;
   search.run(scales.rmls_tolerance, surface_degree(scales, settings));
-  const double radius = (search.local.back() - p).norm();
+  const double radius = search.radius();
   const double cos_sharp = std::cos(radians(settings.sharpness_angle));
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
   std::vector<Rmls_surface*> distinct;
@@ -418,8 +423,7 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
 {
   typedef Forward_search_constants C;
   Projection result;
-  // The neighbourhood is sorted by distance to its candidate, which comes first.
-  const double radius = (search.local.back() - search.local.front()).norm();
+  const double radius = search.radius();
   const double cos_sharp = std::cos(radians(settings.sharpness_angle));
   const double step_tolerance = C::newton_step_tolerance * scales.spacing;
   // The surfaces closest to the point define its edge (and corner).
@@ -537,13 +541,12 @@ inline bool surfaces_explain(const Forward_search& search, const std::vector<con
         return true;
     return false;
   };
-  if(!explained(q))
+  const double reach = search.radius() - (q - search.center()).norm();
+  if(!explained(q) || reach <= 0)
     return false;
-  const Vec3& center = search.local.front();
-  const double reach = (search.local.back() - center).norm() - (q - center).norm();
   std::size_t inside = 0, unexplained = 0;
   for(const Vec3& x : search.local)
-    if(reach > 0 && (x - q).squaredNorm() <= reach * reach)
+    if((x - q).squaredNorm() <= reach * reach)
     {
       ++inside;
       unexplained += explained(x) ? 0 : 1;
@@ -655,8 +658,8 @@ bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& ca
            const std::vector<const Rmls_surface*> surfaces = surfaces_around(cells.member(cell, rank));
            if(surfaces.empty())
              continue;
-           // The surfaces found here serve the rest of the cell, except the candidates that lie
-           // on none of them (the other side of a thin wall, say): those search their own.
+           // The surfaces found here serve the rest of the cell, except the candidates whose
+           // surroundings they do not explain (near a corner, say): those search their own.
            own_search.clear();
            for(std::size_t other = rank; other < size; ++other)
            {
