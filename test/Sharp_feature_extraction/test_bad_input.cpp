@@ -126,6 +126,46 @@ TEST_CASE("a cloud of a few distinct positions, each repeated many times, yields
   extract(mostly_identical);
 }
 
+// Range scanners write (0,0,0) for every ray without a return, and concatenated files repeat
+// points: the pipeline once crashed (stack overflow in the k-d tree construction) on 50,000
+// copies of one point. Exact copies now count once.
+TEST_CASE("copies of points, in any number, change nothing: a cube plus 60,000 copies of one of its points, "
+          "and the cube with every point doubled, give the cube's curves", "[bad input][duplicates]")
+{
+  const std::vector<Point_3> cube = to_points<Point_3>(sample(unit_cube(), 20000, 0));
+  const CGAL::Sharp_features<K> reference = extract(cube);
+  REQUIRE(reference.network.polylines.size() == 12);
+  const std::size_t copies = 60000;
+
+  std::vector<Point_3> with_copies = cube;
+  with_copies.insert(with_copies.end(), copies, cube[0]);
+  std::vector<Point_3> doubled = cube;
+  doubled.insert(doubled.end(), cube.begin(), cube.end());
+  for(const std::vector<Point_3>* cloud : {&with_copies, &doubled})
+  {
+    INFO(cloud->size() << " points");
+    const CGAL::Sharp_features<K> result = extract(*cloud);
+    REQUIRE(result.network.polylines.size() == reference.network.polylines.size());
+    for(std::size_t c = 0; c < result.network.polylines.size(); ++c)
+      CHECK(result.network.polylines[c].points == reference.network.polylines[c].points);
+    // Every copy has its first copy's residual, and is a candidate with it.
+    REQUIRE(result.candidates.residuals.size() == cloud->size());
+    CHECK(result.candidates.residuals.back() == result.candidates.residuals[cloud == &doubled ? cube.size() - 1 : 0]);
+  }
+  const CGAL::Sharp_features<K> twice = extract(doubled);
+  CHECK(twice.candidates.indices.size() == 2 * reference.candidates.indices.size());
+}
+
+TEST_CASE("a cloud of 200,000 copies of (0,0,0) yields no curve, and so does a cube of 500 points beside them",
+          "[bad input][duplicates]")
+{
+  check_empty(extract(std::vector<Point_3>(200000, Point_3(0, 0, 0))));
+  std::vector<Point_3> few = to_points<Point_3>(sample(unit_cube(), 500, 0));
+  few.insert(few.end(), 200000, Point_3(0, 0, 0));
+  const CGAL::Sharp_features<K> result = extract(few);
+  CHECK(mesh_3_contract_violation(result.network) == "");
+}
+
 TEST_CASE("an exact plane has no sharp feature", "[bad input]")
 {
   check_empty(extract(to_points<Point_3>(sample(square_plane(), 10000, 0))));

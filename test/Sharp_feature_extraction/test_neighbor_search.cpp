@@ -177,3 +177,18 @@ TEST_CASE("surfaces found around one candidate serve a neighbour only where they
   // At the rim of the neighbourhood, which covers no ball around it.
   CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.99, 0, 0), tolerance));
 }
+
+TEST_CASE("an index over no points answers every query with nothing", "[neighbors]")
+{
+  // CGAL's Kd_tree has the precondition of a non-empty set (checked in builds without NDEBUG);
+  // the stages build indices over feature points, of which there may be none.
+  sfe::Point_index index;
+  index.build<CGAL::Sequential_tag>(std::vector<sfe::Vec3>());
+  std::vector<std::size_t> found{7};
+  index.nearest(sfe::Vec3(0, 0, 0), 5, found);
+  CHECK(found.empty());
+  found = {7};
+  index.within(sfe::Vec3(0, 0, 0), 1., found);
+  CHECK(found.empty());
+  CHECK(index.size() == 0);
+}

@@ -29,7 +29,9 @@ namespace CGAL {
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`.
 /// \tparam PointRange a model of `ConstRange` whose value type is the key of `point_map`.
 ///
-/// \param points the input points (at least 20 for any candidate to be found).
+/// \param points the input points (at least 20 distinct ones for any candidate to be found).
+///   Exact duplicates are merged before indexing: every copy of a point gets the residual of the
+///   first copy, and is a candidate when that one is.
 /// \param candidates receives the residuals, the candidate indices and the scales.
 /// \param np optional named parameters among:
 /// \cgalNamedParamsBegin

@@ -99,8 +99,9 @@ bool run_pipeline(const Indexed_input& input, const Settings& settings, Sharp_fe
 /// \returns `false` if the `callback` interrupted the computation (the result is then partial).
 /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
 ///
-/// A cloud with fewer than 20 points, or whose points are all identical, yields no curves (and
-/// the function returns `true`).
+/// Exact duplicates count once (every stage merges them: they add no surface information), so a
+/// cloud and the same cloud with its points repeated, in any number, give the same curves. A
+/// cloud with fewer than 20 distinct points yields no curves (and the function returns `true`).
 template <typename ConcurrencyTag, typename PointRange, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
 bool extract_sharp_features(const PointRange& points, Sharp_features<GeomTraits>& result,

@@ -61,7 +61,7 @@ bool rmls_project_candidates(
   sfe::Indexed_input input;
   sfe::index_input_points<ConcurrencyTag>(points, np, input);
   for(std::size_t i : candidates.indices)
-    if(i >= input.points.size())
+    if(i >= input.input_size())
       throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
   const sfe::Scales scales = sfe::to_internal(candidates.scales);
   sfe::Feature_samples out;

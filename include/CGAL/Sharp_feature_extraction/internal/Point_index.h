@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -58,6 +59,10 @@ public:
     Index_to_point map;
     map.points = &m_points;
     m_map = map;
+    m_tree.reset();
+    // CGAL's Kd_tree requires a non-empty set; the queries answer nothing without a tree.
+    if(m_points.empty())
+      return;
     m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0),
                           boost::counting_iterator<std::size_t>(m_points.size()),
                           Tree::Splitter(), Traits(map)));

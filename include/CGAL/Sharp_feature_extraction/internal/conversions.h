@@ -14,12 +14,18 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_sort.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -77,76 +83,129 @@ struct Vec3_as_point_map
   }
 };
 
-/// The input points in double precision, in spatial (Hilbert curve) order, with their spatial
-/// index: what stages 1 and 2 search. Neighbours in space are then neighbours in memory, and
-/// consecutive queries visit the same part of the tree, which makes the neighbour searches
+/// The distinct input points in double precision, in spatial (Hilbert curve) order, with their
+/// spatial index: what stages 1 and 2 search. Neighbours in space are then neighbours in memory,
+/// and consecutive queries visit the same part of the tree, which makes the neighbour searches
 /// several times faster than in input order on large clouds.
+///
+/// Exact duplicates are merged: copies of a point add no surface information (a scanner writes
+/// (0,0,0) for every ray without a return, and concatenated files repeat points), they would fill
+/// neighbourhoods with one position and make fits degenerate, and a k-d tree over many coincident
+/// points cannot split them (CGAL's builds one level per bucket: a stack overflow at ~50k copies).
+/// The first copy in input order represents all of them; per-point outputs give every copy the
+/// value of its representative, so a cloud and the same cloud with its points repeated give the
+/// same curves.
 struct Indexed_input
 {
-  /// The points, in spatial order.
+  /// The distinct points, in spatial order.
   std::vector<Vec3> points;
-  /// `input_index[i]` is the position in the input range of `points[i]`.
+  /// `input_index[i]` is the position in the input range of the first copy of `points[i]`.
   std::vector<std::size_t> input_index;
+  /// `position_of_input[j]` is the position in `points` of input point `j` (of its first copy).
+  std::vector<std::size_t> position_of_input;
   Point_index index;
 
-  /// The input positions of the points at `positions`, ascending.
+  /// The number of input points, copies included.
+  std::size_t input_size() const { return position_of_input.size(); }
+
+  /// Every input point (copies included) whose position is one of `positions`, ascending.
   std::vector<std::size_t> input_indices(const std::vector<std::size_t>& positions) const
   {
-    return sorted_lookup(input_index, positions);
+    std::vector<bool> selected(points.size(), false);
+    for(std::size_t i : positions)
+      selected[i] = true;
+    std::vector<std::size_t> out;
+    for(std::size_t j = 0; j < input_size(); ++j)
+      if(selected[position_of_input[j]])
+        out.push_back(j);
+    return out;
   }
 
-  /// The positions in `points` of the input points `indices`, ascending (spatial order).
+  /// The positions in `points` of the input points `indices`, ascending, each once.
   std::vector<std::size_t> positions(const std::vector<std::size_t>& indices) const
   {
-    std::vector<std::size_t> position_of(input_index.size());
-    for(std::size_t i = 0; i < input_index.size(); ++i)
-      position_of[input_index[i]] = i;
-    return sorted_lookup(position_of, indices);
+    std::vector<std::size_t> out;
+    out.reserve(indices.size());
+    for(std::size_t j : indices)
+      out.push_back(position_of_input[j]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
   }
 
-  /// `values` (one per point, in spatial order) in input order.
+  /// `values` (one per point, in spatial order) in input order, copies included.
   template <typename FT>
   std::vector<FT> in_input_order(const std::vector<double>& values) const
   {
-    std::vector<FT> out(values.size());
-    for(std::size_t i = 0; i < values.size(); ++i)
-      out[input_index[i]] = FT(values[i]);
+    std::vector<FT> out(input_size());
+    for(std::size_t j = 0; j < input_size(); ++j)
+      out[j] = FT(values[position_of_input[j]]);
     return out;
   }
 
-  /// `values` (one per input point, in input order) in spatial order; zeros when `values`
-  /// does not have one value per point.
+  /// `values` (one per input point, in input order) in spatial order, each point taking the
+  /// value of its first copy; zeros when `values` does not have one value per input point.
   template <typename FT>
   std::vector<double> in_spatial_order(const std::vector<FT>& values) const
   {
-    std::vector<double> out(input_index.size(), 0.);
-    if(values.size() == input_index.size())
-      for(std::size_t i = 0; i < input_index.size(); ++i)
+    std::vector<double> out(points.size(), 0.);
+    if(values.size() == input_size())
+      for(std::size_t i = 0; i < points.size(); ++i)
         out[i] = CGAL::to_double(values[input_index[i]]);
     return out;
   }
-
-private:
-  /// `table[k]` for every `k` of `keys`, ascending.
-  static std::vector<std::size_t> sorted_lookup(const std::vector<std::size_t>& table,
-                                                const std::vector<std::size_t>& keys)
-  {
-    std::vector<std::size_t> out;
-    out.reserve(keys.size());
-    for(std::size_t k : keys)
-      out.push_back(table[k]);
-    std::sort(out.begin(), out.end());
-    return out;
-  }
 };
+
+/// Sorts `indices` by the coordinates of `points[i]`, ties by index: a total order, so the
+/// result is the same sequentially and in parallel.
+template <typename ConcurrencyTag>
+void sort_by_coordinates(const std::vector<Vec3>& points, std::vector<std::size_t>& indices)
+{
+  const auto before = [&points](std::size_t a, std::size_t b) {
+    const Vec3& p = points[a];
+    const Vec3& q = points[b];
+    if(p.x() != q.x()) return p.x() < q.x();
+    if(p.y() != q.y()) return p.y() < q.y();
+    if(p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_sort(indices.begin(), indices.end(), before);
+    return;
+  }
+#endif
+  std::sort(indices.begin(), indices.end(), before);
+}
+
+/// For every input point, the index of its first copy (itself if it has no earlier copy).
+template <typename ConcurrencyTag>
+std::vector<std::size_t> first_copies(const std::vector<Vec3>& points)
+{
+  std::vector<std::size_t> by_coordinates(points.size());
+  std::iota(by_coordinates.begin(), by_coordinates.end(), std::size_t(0));
+  sort_by_coordinates<ConcurrencyTag>(points, by_coordinates);
+  std::vector<std::size_t> first(points.size());
+  for(std::size_t k = 0; k < by_coordinates.size(); ++k)
+  {
+    const std::size_t j = by_coordinates[k];
+    const bool copy = k > 0 && points[j] == points[by_coordinates[k - 1]];
+    first[j] = copy ? first[by_coordinates[k - 1]] : j;
+  }
+  return first;
+}
 
 template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
 void index_input_points(const PointRange& points, const NamedParameters& np, Indexed_input& out)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   std::vector<Vec3> read = read_input_points(points, NP_helper::get_const_point_map(points, np));
-  out.input_index.resize(read.size());
-  std::iota(out.input_index.begin(), out.input_index.end(), std::size_t(0));
+  const std::vector<std::size_t> first = first_copies<ConcurrencyTag>(read);
+  out.input_index.clear();
+  for(std::size_t j = 0; j < read.size(); ++j)
+    if(first[j] == j)
+      out.input_index.push_back(j);
   Vec3_as_point_map map;
   map.points = &read;
   // The median policy splits at medians: the order depends on the points only, never on
@@ -154,9 +213,16 @@ void index_input_points(const PointRange& points, const NamedParameters& np, Ind
   CGAL::hilbert_sort<ConcurrencyTag>(out.input_index.begin(), out.input_index.end(),
     CGAL::Spatial_sort_traits_adapter_3<CGAL::Simple_cartesian<double>, Vec3_as_point_map>(map),
     CGAL::Hilbert_sort_median_policy());
-  out.points.resize(read.size());
-  for(std::size_t i = 0; i < read.size(); ++i)
+  out.points.resize(out.input_index.size());
+  out.position_of_input.resize(read.size());
+  for(std::size_t i = 0; i < out.input_index.size(); ++i)
+  {
     out.points[i] = read[out.input_index[i]];
+    out.position_of_input[out.input_index[i]] = i;
+  }
+  for(std::size_t j = 0; j < read.size(); ++j)
+    if(first[j] != j)
+      out.position_of_input[j] = out.position_of_input[first[j]];
   read = std::vector<Vec3>();
   out.index.template build<ConcurrencyTag>(out.points);
 }
