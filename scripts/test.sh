@@ -1,13 +1,61 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with the tests and runs them; exits with the
-# status of ctest. Extra arguments go to cmake, e.g. `bash scripts/test.sh -DSFE_BUILD_MESHING=OFF`.
+# status of ctest.
+#
+#   bash scripts/test.sh                the Release suite, in build/ (the README's command)
+#   bash scripts/test.sh --assertions   the suite with CGAL's assertions and preconditions on
+#                                       (optimised, without NDEBUG), in build-assertions/; the
+#                                       example programs are not built (no test runs them)
+#   bash scripts/test.sh --sanitize     the suite under AddressSanitizer and UndefinedBehaviorSanitizer
+#                                       (the Mesh_3 tests and the examples left out: ~3.6 GB
+#                                       and minutes each), in build-sanitize/
+#
+# Every option of the build is set explicitly at each run, so that what ran before in the same
+# build directory (scripts/demo.sh configures build/ without tests and meshing) changes nothing.
+# Extra arguments go to cmake after those, e.g. `bash scripts/test.sh -DSFE_BUILD_MESHING=OFF`.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$SFE_ROOT"
 
+mode=release
+case "${1:-}" in
+  --assertions|--sanitize) mode="${1#--}"; shift ;;
+esac
+
+build_options=(-DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=ON -DSFE_BUILD_BENCHMARK=OFF)
+case "$mode" in
+  release)
+    build_options+=(-DSFE_BUILD_MESHING=ON)
+    ;;
+  assertions)
+    SFE_BUILD_DIR="$SFE_ROOT/build-assertions"
+    # -O2 keeps the suite within CI's time (at -O0 single tests take 30-45 s); no NDEBUG, so
+    # CGAL_assertion and CGAL_precondition are checked.
+    # The examples are left out (no test runs them; the Release run builds them).
+    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=ON
+                    -DCMAKE_BUILD_TYPE=Assertions -DCMAKE_CXX_FLAGS_ASSERTIONS=-O2)
+    ;;
+  sanitize)
+    SFE_BUILD_DIR="$SFE_ROOT/build-sanitize"
+    sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DCMAKE_BUILD_TYPE=Sanitize
+                    "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -g $sanitizers"
+                    "-DCMAKE_EXE_LINKER_FLAGS_SANITIZE=$sanitizers")
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    ;;
+esac
+
 install_missing_packages "${SFE_PACKAGES[@]}"
-configure_and_build -DSFE_BUILD_TESTS=ON "$@"
+configure_and_build "${build_options[@]}" "$@"
+
+# The meshing tests must be there whenever meshing is on: a cached option once dropped them
+# silently (scripts/demo.sh, then this script, in one checkout).
+meshing_on="$(sed -n 's/^SFE_BUILD_MESHING:BOOL=//p' "$SFE_BUILD_DIR/CMakeCache.txt")"
+if [ "$meshing_on" = ON ] && ! ctest --test-dir "$SFE_BUILD_DIR" -N | grep -q meshing; then
+  sfe_die "SFE_BUILD_MESHING is ON in $SFE_BUILD_DIR but no meshing test is registered"
+fi
 
 status=0
 # --no-tests=error: a build that lost its tests must not pass.
