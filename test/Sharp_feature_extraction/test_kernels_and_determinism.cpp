@@ -1,6 +1,7 @@
 // The pipeline is kernel-generic (Epick and Simple_cartesian<double> give the same curves),
 // deterministic (same output on two runs and with Sequential_tag or Parallel_tag, bit for bit),
-// reports monotone progress in [0, 1] and stops cleanly when the callback returns false, and
+// gives the same curves when called from several user threads at once, reports monotone
+// progress in [0, 1] and stops cleanly when the callback returns false, and
 // its output is ready for Mesh_3 (exactly shared corners, exactly closed loops, consistent
 // corner/curve incidences).
 
@@ -13,6 +14,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <exception>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -150,6 +153,70 @@ TEST_CASE("Sequential_tag and Parallel_tag give bit-identical curves", "[determi
     }
 }
 #endif
+
+namespace {
+
+/// Runs the default call with `Tag` on each cloud in a thread of its own, all at once. Catch's
+/// assertions are not thread-safe: the threads only record what happened.
+template <typename Tag>
+std::vector<CGAL::Sharp_features<Epick>> extract_in_threads(const std::vector<std::vector<Epick::Point_3>>& clouds)
+{
+  std::vector<CGAL::Sharp_features<Epick>> results(clouds.size());
+  std::vector<char> completed(clouds.size(), 0);
+  std::vector<std::exception_ptr> failures(clouds.size());
+  std::vector<std::thread> threads;
+  for(std::size_t i = 0; i < clouds.size(); ++i)
+    threads.emplace_back([&, i] {
+      try
+      {
+        completed[i] = CGAL::extract_sharp_features<Tag>(clouds[i], results[i]);
+      }
+      catch(...)
+      {
+        failures[i] = std::current_exception();
+      }
+    });
+  for(std::thread& t : threads)
+    t.join();
+  for(std::size_t i = 0; i < clouds.size(); ++i)
+  {
+    INFO("thread " << i);
+    if(failures[i])
+      std::rethrow_exception(failures[i]);
+    CHECK(completed[i]);
+  }
+  return results;
+}
+
+} // namespace
+
+TEST_CASE("the library called from 4 user threads at once, each on its own cloud, gives the curves of the same "
+          "call alone",
+          "[threads][determinism]")
+{
+  const std::vector<std::pair<Shape, double>> inputs = {
+    {unit_cube(), 0}, {unit_cube(), 0.005}, {capped_cylinder(), 0}, {chamfered_box(), 0.005}};
+  std::vector<std::vector<Epick::Point_3>> clouds;
+  std::vector<CGAL::Sharp_features<Epick>> alone;
+  for(const auto& input : inputs)
+  {
+    clouds.push_back(to_points<Epick::Point_3>(sample(input.first, number_of_points, input.second)));
+    alone.push_back(extract_with<Epick>(input.first, input.second));
+  }
+  // Each thread runs the library's own parallel loops (TBB inside user threads), then the
+  // sequential code: the result is the same call's alone either way (Sequential_tag and
+  // Parallel_tag agree, tested above).
+  const std::vector<CGAL::Sharp_features<Epick>> parallel = extract_in_threads<CGAL::Parallel_if_available_tag>(clouds);
+  const std::vector<CGAL::Sharp_features<Epick>> sequential = extract_in_threads<CGAL::Sequential_tag>(clouds);
+  for(std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    INFO(inputs[i].first.name << ", noise " << inputs[i].second);
+    CHECK(!alone[i].network.polylines.empty());
+    check_identical(alone[i].network, parallel[i].network);
+    check_identical(alone[i].network, sequential[i].network);
+    CHECK(alone[i].candidates.indices == parallel[i].candidates.indices);
+  }
+}
 
 TEST_CASE("the callback receives monotone progress in [0, 1] ending at 1", "[callback]")
 {
