@@ -12,6 +12,9 @@
 #   --report DIR     where REPORT.md and its PNGs go (default benchmark/results, or
 #                    out/bench_quick/report with --quick)
 #   --build DIR      build directory (default out/build-bench)
+#   --only-scanner   only the scanner-like inputs (step 5b): rows in DATA/scanner.jsonl and their
+#                    report section in DATA/scanner.md (default DATA out/bench_scanner, or
+#                    out/bench_scanner_quick with --quick); REPORT.md is left alone
 #
 # Installs the Debian packages it needs (when missing), builds the benchmark programs with
 # -DSFE_BUILD_BENCHMARK=ON, and then, each configuration in its own process:
@@ -20,6 +23,8 @@
 #   3. every part x cloud variant: our pipeline (sfe_bench_run) and VCM (sfe_vcm_run);
 #   4. scaling on fandisk from 50k to 2M points;
 #   5. speed: fandisk at 500k points with 1 and 2 threads (noise 0 and 0.5%), and 10M points;
+#   5b. scanner-like inputs: fandisk and a square scanned by the simulated scanner
+#      (benchmark/Sharp_feature_extraction/scan_simulation.h) with the defects of real files;
 #   6. the report (benchmark/Sharp_feature_extraction/make_report.py);
 #   7. full run only: feature-protected meshing with and without the curves
 #      (scripts/bench_meshing.sh, which writes benchmark/results/meshing/MESHING.md). (benchmark/Sharp_feature_extraction/make_report.py).
@@ -29,6 +34,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
 QUICK=0
+ONLY_SCANNER=0
 DATA=""
 REPORT=""
 BUILD="$ROOT/out/build-bench"
@@ -38,11 +44,16 @@ while [ $# -gt 0 ]; do
     --data) DATA="$2"; shift ;;
     --report) REPORT="$2"; shift ;;
     --build) BUILD="$2"; shift ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    --only-scanner) ONLY_SCANNER=1 ;;
+    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     *) echo "bench.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
 done
+# The scanner rows alone go elsewhere by default: DATA is emptied first.
+if [ "$ONLY_SCANNER" = 1 ]; then
+  DATA="${DATA:-$ROOT/out/bench_scanner$([ "$QUICK" = 0 ] || echo _quick)}"
+fi
 if [ "$QUICK" = 1 ]; then
   DATA="${DATA:-$ROOT/out/bench_quick}"
   REPORT="${REPORT:-$ROOT/out/bench_quick/report}"
@@ -102,9 +113,10 @@ MESHES="$ROOT/out/meshes"
 mkdir -p "$MESHES"
 
 # The meshing benchmark needs two example programs (one of them includes Mesh_3: slow to build).
-MESHING=$([ "$QUICK" = 1 ] && echo 0 || echo 1)
+MESHING=$([ "$QUICK" = 1 ] || [ "$ONLY_SCANNER" = 1 ] && echo 0 || echo 1)
 TARGETS=(sfe_ground_truth sfe_scoring_selftest sfe_vcm_run sfe_bench_run)
 [ "$MESHING" = 1 ] && TARGETS+=(mesh_with_sharp_features measure_mesh_against_truth)
+if [ "$ONLY_SCANNER" = 1 ]; then TARGETS=(sfe_ground_truth sfe_bench_run); fi
 log "building the benchmark programs in $BUILD"
 cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSFE_BUILD_BENCHMARK=ON \
   -DSFE_BUILD_EXAMPLES="$([ "$MESHING" = 1 ] && echo ON || echo OFF)" -DSFE_BUILD_MESHING=ON \
@@ -140,6 +152,9 @@ if [ "$QUICK" = 1 ]; then
   SCALING_SIZES="50000 100000"
   SPEED_POINTS=100000
   LARGE_POINTS=""
+  SCAN_RETURNS=50000
+  SCAN_DUPLICATES=500000
+  SCAN_LARGE=1000000
   DO_SWEEP=0
   REPEAT_CHECK=0
 else
@@ -151,6 +166,9 @@ else
   SCALING_SIZES="50000 100000 200000 500000 1000000 2000000"
   SPEED_POINTS=500000
   LARGE_POINTS=10000000
+  SCAN_RETURNS=100000
+  SCAN_DUPLICATES=1000000
+  SCAN_LARGE=10000000
   DO_SWEEP=1
   REPEAT_CHECK=1
 fi
@@ -180,6 +198,51 @@ run_row() { # FILE LABEL METHOD COMMAND...
   fi
   return 0
 }
+
+# Scanner-like inputs: fandisk scanned from 4 viewpoints (SCAN_RETURNS returns) as the
+# reference, then one defect of real scans per row, and a square scanned from one viewpoint.
+# What each row should give is stated in make_report.py (SCANNER_ROWS) and checked there.
+scanner_rows() {
+  local rows="$DATA/scanner.jsonl"
+  local fandisk=(--mesh "$MESHES/fandisk.off" --truth "$DATA/truth/fandisk" --seed "$SEED" --scan-views 4)
+  # The square z = 0: its border is no crease, so its truth is empty.
+  local plane="$DATA/truth/scan_plane"
+  printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n' >"$plane.off"
+  : >"$plane.polylines.txt"
+  : >"$plane.corners.xyz"
+  echo 1.4142135623730951 >"$plane.diagonal"
+  local square=(--mesh "$plane.off" --truth "$plane" --seed "$SEED" --scan-views 1 --points "$SCAN_RETURNS")
+  scan_row() { # NAME OPTIONS...
+    local name="$1"; shift
+    log "  scanner_$name"
+    run_row "$rows" "scanner_$name" ours "$BIN/sfe_bench_run" "$@"
+  }
+  log "scanner-like inputs: fandisk scanned from 4 viewpoints ($SCAN_RETURNS returns), a scanned square, $SCAN_LARGE returns"
+  scan_row reference "${fandisk[@]}" --points "$SCAN_RETURNS"
+  scan_row range_noise "${fandisk[@]}" --points "$SCAN_RETURNS" --noise 0.005
+  scan_row offset_1e6 "${fandisk[@]}" --points "$SCAN_RETURNS" --offset 1e6
+  scan_row offset_1e8 "${fandisk[@]}" --points "$SCAN_RETURNS" --offset 1e8
+  scan_row lines_4 "${fandisk[@]}" --points "$SCAN_RETURNS" --scan-lines 4
+  scan_row lines_8 "${fandisk[@]}" --points "$SCAN_RETURNS" --scan-lines 8
+  scan_row misregistered "${fandisk[@]}" --points "$SCAN_RETURNS" --misregistration 0.001
+  scan_row window_2 "${fandisk[@]}" --points "$SCAN_RETURNS" --scan-window 2
+  scan_row no_returns "${fandisk[@]}" --points "$SCAN_RETURNS" --scan-window 2 --no-returns 1
+  scan_row duplicates "${fandisk[@]}" --points "$SCAN_RETURNS" --duplicates "$SCAN_DUPLICATES"
+  scan_row distinct "${fandisk[@]}" --points "$((SCAN_RETURNS + SCAN_DUPLICATES))"
+  scan_row plane "${square[@]}"
+  scan_row plane_noise "${square[@]}" --noise 0.005
+  scan_row large "${fandisk[@]}" --points "$SCAN_LARGE"
+}
+
+if [ "$ONLY_SCANNER" = 1 ]; then
+  [ -s "$MESHES/fandisk.off" ] || fetch_cgal_mesh fandisk >/dev/null
+  "$BIN/sfe_ground_truth" --mesh "$MESHES/fandisk.off" --prefix "$DATA/truth/fandisk" --angle "$(truth_angle fandisk)" \
+    --label fandisk --output "$DATA/truth.jsonl"
+  scanner_rows
+  "$PYTHON" "$MAKE_REPORT" --scanner "$DATA/scanner.jsonl" >"$DATA/scanner.md"
+  log "done in $((SECONDS - START_SECONDS)) s: $DATA/scanner.md"
+  exit 0
+fi
 
 log "ground truth"
 for part in $PARTS $CONTROLS; do
@@ -276,6 +339,8 @@ if [ -n "$LARGE_POINTS" ]; then
   run_row "$DATA/speed.jsonl" "speed_noise0_$LARGE_POINTS" ours "$BIN/sfe_bench_run" --mesh "$MESHES/fandisk.off" \
     --truth "$DATA/truth/fandisk" --points "$LARGE_POINTS" --noise 0 --seed "$SEED" --threads 2
 fi
+
+scanner_rows
 
 # The machine and the commands, for the report.
 {

@@ -8,6 +8,7 @@
 #define SFE_BENCHMARK_BENCH_SUPPORT_H
 
 #include "feature_scoring.h"
+#include "scan_simulation.h"
 
 #include <utilities/mesh_surface_sampling.h>
 
@@ -65,29 +66,81 @@ private:
 };
 
 /// The options that define a test cloud, shared by every runner so that ours and the peer
-/// see exactly the same points.
+/// see exactly the same points. With `--scan-views V` (1 to 8) the cloud is a simulated scan
+/// (scan_simulation.h) instead of a uniform sample: `--points` is then the number of returns,
+/// `--noise` the range noise along the rays, `--scan-lines` the spacing of the scan lines over
+/// the spacing along them, `--scan-window` the ray grid's width over the object's,
+/// `--misregistration` the shift of the last view (fraction of dB), and `--no-returns 1` writes
+/// the rays without return as (0,0,0). For either kind, `--offset X` adds (X, X, X) to every
+/// point except those (0,0,0) (georeferenced coordinates; the truth is moved with it) and
+/// `--duplicates D` appends D exact copies of the cloud's points (the whole cloud over and over).
 inline std::map<std::string, std::string> cloud_option_defaults()
 {
-  return {{"mesh", ""},       {"truth", ""},    {"points", "100000"}, {"noise", "0"},
-          {"outliers", "0"},  {"denser", "1"},  {"seed", "1"},        {"label", ""},
-          {"output", "-"}};
+  return {{"mesh", ""},       {"truth", ""},       {"points", "100000"},    {"noise", "0"},
+          {"outliers", "0"},  {"denser", "1"},     {"seed", "1"},           {"label", ""},
+          {"output", "-"},    {"scan-views", "0"}, {"scan-lines", "1"},     {"scan-window", "1"},
+          {"misregistration", "0"}, {"no-returns", "0"}, {"offset", "0"}, {"duplicates", "0"}};
+}
+
+inline std::vector<std::array<double, 3>> scan_cloud(const sfe_utilities::Triangle_soup& soup,
+                                                     const Command_line& options)
+{
+  if(options.number("outliers") != 0 || options.number("denser") != 1)
+    throw std::invalid_argument("--outliers and --denser do not apply to a scan (--scan-views)");
+  sfe_scan::Scan_options scan;
+  scan.views = std::size_t(options.number("scan-views"));
+  scan.returns = std::size_t(options.number("points"));
+  scan.range_noise = options.number("noise");
+  scan.line_spacing_ratio = options.number("scan-lines");
+  scan.window = options.number("scan-window");
+  scan.misregistration = options.number("misregistration");
+  scan.no_returns_as_origin = options.number("no-returns") != 0;
+  scan.offset = {{options.number("offset"), options.number("offset"), options.number("offset")}};
+  scan.seed = std::uint64_t(options.number("seed"));
+  return sfe_scan::scan_mesh(sfe_scan::Mesh{soup.vertices, soup.triangles}, scan).points;
 }
 
 inline std::vector<Point> make_cloud(const Command_line& options)
 {
   const sfe_utilities::Triangle_soup soup = sfe_utilities::read_triangle_soup(options.text("mesh"));
-  sfe_utilities::Sampling_options sampling;
-  sampling.number_of_points = std::size_t(options.number("points"));
-  sampling.noise = options.number("noise");
-  sampling.outlier_fraction = options.number("outliers");
-  sampling.denser_half_factor = options.number("denser");
-  sampling.seed = unsigned(options.number("seed"));
-  const std::vector<std::array<double, 3>> samples = sfe_utilities::sample_triangle_soup(soup, sampling);
+  std::vector<std::array<double, 3>> samples;
+  const double offset = options.number("offset");
+  if(options.number("scan-views") > 0)
+    samples = scan_cloud(soup, options);
+  else
+  {
+    sfe_utilities::Sampling_options sampling;
+    sampling.number_of_points = std::size_t(options.number("points"));
+    sampling.noise = options.number("noise");
+    sampling.outlier_fraction = options.number("outliers");
+    sampling.denser_half_factor = options.number("denser");
+    sampling.seed = unsigned(options.number("seed"));
+    samples = sfe_utilities::sample_triangle_soup(soup, sampling);
+    for(std::array<double, 3>& p : samples)
+      p = {{p[0] + offset, p[1] + offset, p[2] + offset}};
+  }
+  const std::size_t distinct = samples.size(), duplicates = std::size_t(options.number("duplicates"));
+  if(duplicates > 0 && distinct == 0)
+    throw std::invalid_argument("--duplicates of an empty cloud");
   std::vector<Point> cloud;
-  cloud.reserve(samples.size());
-  for(const std::array<double, 3>& p : samples)
-    cloud.emplace_back(p[0], p[1], p[2]);
+  cloud.reserve(distinct + duplicates);
+  for(std::size_t i = 0; i < distinct + duplicates; ++i)
+    cloud.emplace_back(samples[i % distinct][0], samples[i % distinct][1], samples[i % distinct][2]);
   return cloud;
+}
+
+/// The ground truth of `--truth`, moved by `--offset` as the cloud is.
+inline Ground_truth read_cloud_truth(const Command_line& options)
+{
+  Ground_truth truth = read_ground_truth(options.text("truth"));
+  const double offset = options.number("offset");
+  const Vector shift(offset, offset, offset);
+  for(Polyline& curve : truth.curves)
+    for(Point& p : curve)
+      p = p + shift;
+  for(Point& p : truth.corners)
+    p = p + shift;
+  return truth;
 }
 
 /// Wall-clock seconds since construction.
@@ -174,7 +227,14 @@ inline void add_cloud_fields(Json_line& line, const Command_line& options, std::
       .add("noise", options.number("noise"))
       .add("outliers", options.number("outliers"))
       .add("denser", options.number("denser"))
-      .add("seed", std::size_t(options.number("seed")));
+      .add("seed", std::size_t(options.number("seed")))
+      .add("scan_views", std::size_t(options.number("scan-views")))
+      .add("scan_lines", options.number("scan-lines"))
+      .add("scan_window", options.number("scan-window"))
+      .add("misregistration", options.number("misregistration"))
+      .add("no_returns", options.number("no-returns") != 0)
+      .add("offset", options.number("offset"))
+      .add("duplicates", std::size_t(options.number("duplicates")));
 }
 
 inline void add_point_fields(Json_line& line, const std::string& prefix, const Point_evaluation& evaluation,

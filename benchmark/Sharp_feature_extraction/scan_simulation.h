@@ -158,6 +158,9 @@ public:
       throw std::invalid_argument("scan simulation: views must be 1 to 8");
     if(!(options.line_spacing_ratio >= 1) || !(options.window >= 1) || !(options.distance > 0.5))
       throw std::invalid_argument("scan simulation: line_spacing_ratio and window must be >= 1, distance > 0.5 dB");
+    // The grid's azimuths and elevations cover one hemisphere at most.
+    if(!(std::asin(0.5 / options.distance) * options.window < std::acos(0.)))
+      throw std::invalid_argument("scan simulation: the window is wider than a hemisphere");
     K::Point_3 low(mesh.vertices.front()[0], mesh.vertices.front()[1], mesh.vertices.front()[2]), high = low;
     for(const Xyz& v : mesh.vertices)
     {

@@ -133,7 +133,7 @@ int main(int argc, char** argv)
       thread_limit.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, threads));
 #endif
 
-    const Ground_truth truth = read_ground_truth(options.text("truth"));
+    const Ground_truth truth = read_cloud_truth(options);
     const bool has_truth = !truth.curves.empty();
     const std::vector<Point> cloud = make_cloud(options);
 

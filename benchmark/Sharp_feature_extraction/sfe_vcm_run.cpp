@@ -34,7 +34,7 @@ int main(int argc, char** argv)
     if(options.text("mesh").empty() || options.text("truth").empty())
       throw std::invalid_argument("--mesh and --truth are required\n" + options.usage());
 
-    const Ground_truth truth = read_ground_truth(options.text("truth"));
+    const Ground_truth truth = read_cloud_truth(options);
     const bool has_truth = !truth.curves.empty();
     const double dB = truth.diagonal;
     const std::vector<Point> cloud = make_cloud(options);
