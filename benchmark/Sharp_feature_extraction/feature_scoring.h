@@ -125,9 +125,16 @@ class Point_set_distance
   typedef Search::Tree Tree;
 
 public:
-  explicit Point_set_distance(const std::vector<Point>& points) : tree_(points.begin(), points.end())
+  /// The tree holds each position once: a labelled set may repeat a point many times (every
+  /// copy of a duplicated input point is labelled), and CGAL's Kd_tree construction recurses
+  /// once per split of coincident points (a stack overflow at ~50k copies).
+  explicit Point_set_distance(std::vector<Point> points)
   {
-    tree_.build();
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    tree_.insert(points.begin(), points.end());
+    if(!points.empty())
+      tree_.build();
   }
   bool empty() const { return tree_.size() == 0; }
   double distance(const Point& p) const
