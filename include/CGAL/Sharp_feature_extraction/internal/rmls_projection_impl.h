@@ -19,6 +19,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -122,21 +123,24 @@ public:
   /// Competitive refinement of the surfaces in `set`: every point goes to the surface it fits
   /// best (if within the tolerance) and each surface is refitted. This undoes the greed of the
   /// forward search, where the first surface also takes the points of the next one that lie
-  /// within the tolerance near the crease and is biased towards it.
+  /// within the tolerance near the crease and is biased towards it. Two planes (noisy data)
+  /// compete as half-planes, each bounded by their intersection line (see `half_residual()`).
   void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds,
               const Vec3& center, double bandwidth)
   {
     for(std::size_t round = 0; round < rounds; ++round)
     {
+      const bool halves = degree == 1 && set.size() == 2 && set_halves(*set[0], *set[1], center);
       for(Rmls_surface* s : set)
         s->members.clear();
       for(std::size_t i = 0; i < local.size(); ++i)
       {
         Rmls_surface* best = nullptr;
         double best_residual = tolerance;
-        for(Rmls_surface* s : set)
+        for(std::size_t k = 0; k < set.size(); ++k)
         {
-          const double r = s->fit.residual(local[i]);
+          Rmls_surface* s = set[k];
+          const double r = halves ? half_residual(*s, k, local[i]) : s->fit.residual(local[i]);
           if(r <= best_residual)
           {
             best_residual = r;
@@ -147,6 +151,7 @@ public:
           best->members.push_back(i);
       }
       for(Rmls_surface* s : set)
+      {
         if(s->members.size() >= 3)
         {
           Local_frame frame;
@@ -154,13 +159,11 @@ public:
           if(principal_frame(local, s->members, frame, spread))
             s->fit.fit(local, s->members, frame, degree, center, bandwidth);
         }
-    }
-    for(Rmls_surface* s : set)
-    {
-      s->centroid = Vec3::Zero();
-      for(std::size_t i : s->members)
-        s->centroid += local[i];
-      s->centroid /= double((std::max<std::size_t>)(1, s->members.size()));
+        s->centroid = Vec3::Zero();
+        for(std::size_t i : s->members)
+          s->centroid += local[i];
+        s->centroid /= double((std::max<std::size_t>)(1, s->members.size()));
+      }
     }
   }
 
@@ -169,6 +172,43 @@ private:
   std::vector<std::size_t> m_free, m_centers, m_seed;
   std::vector<double> m_distance, m_center_distance, m_selection;
   std::vector<std::pair<double, std::size_t>> m_ranked;
+  // A point of the crease line of two planes and, in each plane, the unit direction from the
+  // line towards that plane's members: each surface is then a half-plane.
+  Vec3 m_line_point = Vec3::Zero();
+  std::array<Vec3, 2> m_half_direction;
+
+  // Sets the half-planes of the planes `a` and `b` about their intersection line nearest to
+  // `center`; false if the planes are nearly parallel or a centroid lies on the line.
+  bool set_halves(const Rmls_surface& a, const Rmls_surface& b, const Vec3& center)
+  {
+    const Vec3 na = a.fit.normal(center), nb = b.fit.normal(center);
+    if(!closest_on_plane_intersection(center, a.fit.foot(center), na, b.fit.foot(center), nb, m_line_point))
+      return false;
+    const Vec3 t = na.cross(nb).normalized();
+    const Rmls_surface* s[2] = {&a, &b};
+    const Vec3 n[2] = {na, nb};
+    for(int k = 0; k < 2; ++k)
+    {
+      const Vec3 d = s[k]->centroid - m_line_point;
+      const Vec3 u = d - d.dot(t) * t - d.dot(n[k]) * n[k];
+      if(!(u.norm() > 0))
+        return false;
+      m_half_direction[k] = u.normalized();
+    }
+    return true;
+  }
+
+  // Distance from `x` to the half-plane of surface `k` (set by `set_halves()`): its height
+  // over the plane on the members' side of the crease line, the distance to the line beyond.
+  // Across a shallow crease this separates the sides better than the heights over the whole
+  // planes, which meet at a small angle: a point of one side at distance d from the crease
+  // lies d sin(angle) from the other plane but d from its half.
+  double half_residual(const Rmls_surface& s, std::size_t k, const Vec3& x) const
+  {
+    const double h = s.fit.residual(x);
+    const double beyond = (x - m_line_point).dot(m_half_direction[k]);
+    return beyond >= 0 ? h : std::sqrt(h * h + beyond * beyond);
+  }
 
   // Least-residual seed: planes through small subsets around a few well spread centres.
   bool find_seed(double tolerance, int degree, std::vector<std::size_t>& seed)
@@ -180,7 +220,12 @@ private:
     // Smaller seeds when what is left may hold two small surfaces (near corners), but enough
     // points to determine the fit.
     const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : C::min_surface_points;
-    const std::size_t seed_size = degree >= 2 ? C::quadric_seed_size : C::plane_seed_size;
+    // Plane seeds (noisy data) hold at least the smallest surface the search accepts: the
+    // neighbourhood grows with the noise, and so must the seed for its plane to tilt no more
+    // than the noise allows (the tilt error of a plane fit falls as 1/sqrt(points)).
+    const std::size_t seed_size = degree >= 2
+      ? C::quadric_seed_size
+      : (std::max)(C::plane_seed_size, std::size_t(C::min_surface_fraction * double(local.size())));
     const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(seed_size, m_free.size() / 3)));
     // Farthest point sampling of the centres, starting from the free point nearest the candidate;
     // the distances of the free points to each centre are kept for the seed selection below.
