@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <vector>
 
@@ -146,6 +148,94 @@ TEST_CASE("curve repair splits a curve where another curve ends on it (a T-junct
   sfe_meshing::repair_feature_curves_for_mesh_3(curves, options);
   REQUIRE(curves.size() == 3);
   CHECK(sfe_meshing::find_mesh_3_feature_problems(curves, 0.02).empty());
+}
+
+TEST_CASE("curve repair: two curves that leave a shared corner together, their vertices a small "
+          "fraction of the spacing apart without being shared, are made Mesh_3-safe",
+          "[meshing]")
+{
+  // two curves from one corner, 0.02 s apart over 5 s (a crease found twice near a corner:
+  // Mesh_3's protecting balls there would have to shrink to the gap), then diverging, and a
+  // third curve leaving the corner at 90 degrees, which is fine
+  const double s = 0.01;
+  const Point_3 corner(0, 0, 0);
+  Curve a, b, c;
+  for(int i = 0; i <= 40; ++i) {
+    a.points.push_back(Point_3(0.25 * s * i, 0, 0));
+    const double gap = i <= 20 ? 0.02 * s * (i > 0) : 0.02 * s + 0.5 * s * (i - 20);
+    b.points.push_back(Point_3(0.25 * s * i, gap, 0));
+    c.points.push_back(Point_3(0, 0, 0.25 * s * i));
+  }
+  b.points.front() = corner;
+  std::vector<Curve> curves = {a, b, c};
+  const double tol = 1.5 * s;
+  CHECK_FALSE(sfe_meshing::find_mesh_3_feature_problems(curves, tol).empty());
+
+  sfe_meshing::Curve_repair_options options;
+  options.snap_tolerance = tol;
+  options.minimum_length = 3 * s;
+  const sfe_meshing::Curve_repair_report report = sfe_meshing::repair_feature_curves_for_mesh_3(curves, options);
+  INFO(report.summary());
+  CHECK(sfe_meshing::find_mesh_3_feature_problems(curves, tol).empty());
+  // no two vertices of different curves closer than a tenth of the spacing unless equal
+  double closest = 1;
+  for(std::size_t i = 0; i < curves.size(); ++i)
+    for(std::size_t j = i + 1; j < curves.size(); ++j)
+      for(const Point_3& p : curves[i].points)
+        for(const Point_3& q : curves[j].points)
+          if(p != q)
+            closest = (std::min)(closest, std::sqrt(CGAL::squared_distance(p, q)));
+  CHECK(closest > 0.1 * s);
+  // the perpendicular curve is kept
+  bool perpendicular_kept = false;
+  for(const Curve& curve : curves)
+    perpendicular_kept = perpendicular_kept || curve.points.back() == c.points.back();
+  CHECK(perpendicular_kept);
+}
+
+TEST_CASE("an implicit function whose far field is zero up to noise, slightly negative near one face "
+          "of the domain's cube (Poisson's far field), meshes into the closed sphere it holds, "
+          "not into a spurious surface cut open by the cube",
+          "[meshing]")
+{
+  // a ball of radius 0.3, then a decay to a far-field level of 1e-8 (relative to the ball's
+  // depth 0.3, as Poisson's far field is to its interior), negative beyond x = 0.6: the cube of
+  // the bounding sphere (half side 0.8) cuts that patch open
+  const double ball = 0.3, decay_start = 0.4, decay_end = 0.6, level = 1e-8, patch = 0.6;
+  auto function = [=](const Point_3& x) {
+    const double r = std::sqrt(CGAL::to_double(x.x() * x.x() + x.y() * x.y() + x.z() * x.z()));
+    if(r < decay_start)
+      return r - ball;
+    if(r < decay_end)
+      return (decay_start - ball) * std::pow(level / (decay_start - ball), (r - decay_start) / (decay_end - decay_start));
+    return x.x() > patch ? -level : level;
+  };
+  sfe_meshing::Mesh_sizes sizes;
+  sizes.facet_size = sizes.edge_size = 0.05;
+  sizes.facet_distance = 0.005;
+  sfe_meshing::Surface_meshing_limits limits;
+  // a sphere of that size needs about 2000 vertices: 20 times that is a runaway
+  limits.maximal_number_of_vertices = 40000;
+  const K::Sphere_3 bound(CGAL::ORIGIN, 0.8 * 0.8);
+  // without the lift, Mesh_3 meshes the patch too, cut open by the cube: not one closed surface
+  sfe_meshing::Surface_meshing_limits unlifted = limits;
+  unlifted.far_field_margin = 0;
+  const auto broken = sfe_meshing::mesh_implicit_surface<K>(function, bound, {}, sizes, unlifted);
+  CHECK_FALSE((broken.error.empty() &&
+               sfe_meshing::check_triangle_soup(broken.surface.points, broken.surface.triangles).valid()));
+
+  const auto result = sfe_meshing::mesh_implicit_surface<K>(function, bound, {}, sizes, limits);
+  INFO(result.error);
+  REQUIRE(result.error.empty());
+  const sfe_meshing::Surface_check check =
+    sfe_meshing::check_triangle_soup(result.surface.points, result.surface.triangles);
+  INFO(check.summary());
+  CHECK(check.valid());
+  CHECK(result.far_field < 1e-6 * ball);
+  double deviation = 0;
+  for(const Point_3& p : result.surface.points)
+    deviation = (std::max)(deviation, std::abs(std::sqrt(CGAL::squared_distance(p, Point_3(CGAL::ORIGIN))) - ball));
+  CHECK(deviation < sizes.facet_distance);
 }
 
 TEST_CASE("a chamfered box sampled with 20k points and meshed with its creases is closed, manifold "
