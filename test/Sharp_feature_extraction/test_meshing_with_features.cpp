@@ -193,51 +193,6 @@ TEST_CASE("curve repair: two curves that leave a shared corner together, their v
   CHECK(perpendicular_kept);
 }
 
-TEST_CASE("an implicit function whose far field is zero up to noise, slightly negative near one face "
-          "of the domain's cube (Poisson's far field), meshes into the closed sphere it holds, "
-          "not into a spurious surface cut open by the cube",
-          "[meshing]")
-{
-  // a ball of radius 0.3, then a decay to a far-field level of 1e-8 (relative to the ball's
-  // depth 0.3, as Poisson's far field is to its interior), negative beyond x = 0.6: the cube of
-  // the bounding sphere (half side 0.8) cuts that patch open
-  const double ball = 0.3, decay_start = 0.4, decay_end = 0.6, level = 1e-8, patch = 0.6;
-  auto function = [=](const Point_3& x) {
-    const double r = std::sqrt(CGAL::to_double(x.x() * x.x() + x.y() * x.y() + x.z() * x.z()));
-    if(r < decay_start)
-      return r - ball;
-    if(r < decay_end)
-      return (decay_start - ball) * std::pow(level / (decay_start - ball), (r - decay_start) / (decay_end - decay_start));
-    return x.x() > patch ? -level : level;
-  };
-  sfe_meshing::Mesh_sizes sizes;
-  sizes.facet_size = sizes.edge_size = 0.05;
-  sizes.facet_distance = 0.005;
-  sfe_meshing::Surface_meshing_limits limits;
-  // a sphere of that size needs about 2000 vertices: 20 times that is a runaway
-  limits.maximal_number_of_vertices = 40000;
-  const K::Sphere_3 bound(CGAL::ORIGIN, 0.8 * 0.8);
-  // without the lift, Mesh_3 meshes the patch too, cut open by the cube: not one closed surface
-  sfe_meshing::Surface_meshing_limits unlifted = limits;
-  unlifted.far_field_margin = 0;
-  const auto broken = sfe_meshing::mesh_implicit_surface<K>(function, bound, {}, sizes, unlifted);
-  CHECK_FALSE((broken.error.empty() &&
-               sfe_meshing::check_triangle_soup(broken.surface.points, broken.surface.triangles).valid()));
-
-  const auto result = sfe_meshing::mesh_implicit_surface<K>(function, bound, {}, sizes, limits);
-  INFO(result.error);
-  REQUIRE(result.error.empty());
-  const sfe_meshing::Surface_check check =
-    sfe_meshing::check_triangle_soup(result.surface.points, result.surface.triangles);
-  INFO(check.summary());
-  CHECK(check.valid());
-  CHECK(result.far_field < 1e-6 * ball);
-  double deviation = 0;
-  for(const Point_3& p : result.surface.points)
-    deviation = (std::max)(deviation, std::abs(std::sqrt(CGAL::squared_distance(p, Point_3(CGAL::ORIGIN))) - ball));
-  CHECK(deviation < sizes.facet_distance);
-}
-
 TEST_CASE("a chamfered box sampled with 20k points and meshed with its creases is closed, manifold "
           "and free of self-intersections; against the same pipeline without creases the crease "
           "band error drops at least 3x, crease angles are within 10 degrees, and it needs no more "
