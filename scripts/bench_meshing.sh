@@ -6,8 +6,12 @@
 # render them with the same cameras, and write benchmark/results/meshing/MESHING.md.
 #
 #   scripts/bench_meshing.sh [--build DIR] [--parts "fandisk anchor joint part"]
-#                            [--noises "0 0.005"] [--points 100000] [--true-curves]
-#                            [--work DIR] [--time-limit SEC]
+#                            [--noises "0 0.005"] [--seeds "1 2 3 4 5"] [--points 100000]
+#                            [--true-curves] [--work DIR] [--time-limit SEC]
+#
+# --seeds: one independently drawn cloud per seed and case (the sampler's seed), so that a
+# failure on one draw of the same part and noise cannot hide behind a lucky one. The table has
+# one row per run and a summary per part, noise and run over the seeds (valid count, medians).
 #
 # --true-curves adds a third run per case, protecting the true creases instead of the
 # extracted ones (the best the meshing can do with perfect curves). When the library's
@@ -19,6 +23,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build"
 parts="fandisk anchor joint part"
 noises="0 0.005"
+seeds="1 2 3 4 5"
 points=100000
 true_curves=0
 time_limit=1800
@@ -28,11 +33,12 @@ while [ $# -gt 0 ]; do
     --build) build="$2"; shift 2 ;;
     --parts) parts="$2"; shift 2 ;;
     --noises) noises="$2"; shift 2 ;;
+    --seeds) seeds="$2"; shift 2 ;;
     --points) points="$2"; shift 2 ;;
     --true-curves) true_curves=1; shift ;;
     --work) work="$2"; shift 2 ;;
     --time-limit) time_limit="$2"; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "bench_meshing.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -72,17 +78,17 @@ fi
 
 value() { grep "^$1=" "$2" | head -n 1 | cut -d= -f2; }
 
-run_case() { # part noise variant -> stats + measures in $work/<part>_<noise>_<variant>.*
-  local part="$1" noise="$2" variant="$3"
-  local base="$work/${part}_${noise}_${variant}"
-  local cloud="$work/${part}_${noise}.xyz"
+run_case() { # part noise seed variant -> stats + measures in $work/<part>_<noise>_s<seed>_<variant>.*
+  local part="$1" noise="$2" seed="$3" variant="$4"
+  local base="$work/${part}_${noise}_s${seed}_${variant}"
+  local cloud="$work/${part}_${noise}_s${seed}.xyz"
   local args=(--quiet --time-limit "$time_limit" --stats "$base.stats")
   case "$variant" in
     plain) args+=(--no-features) ;;
     features) [ "$extraction" = 1 ] || args+=(--curves "$work/${part}_true_curves.txt") ;;
     true) args+=(--curves "$work/${part}_true_curves.txt") ;;
   esac
-  echo "  $part noise $noise: $variant" >&2
+  echo "  $part noise $noise seed $seed: $variant" >&2
   local status=0
   "$mesher" "${args[@]}" "$cloud" "$base" > "$base.log" 2>&1 || status=$?
   if [ ! -f "$base.off" ] || [ "$status" = 1 ]; then
@@ -90,29 +96,52 @@ run_case() { # part noise variant -> stats + measures in $work/<part>_<noise>_<v
     return 1
   fi
   "$measure" --truth "$data/$part.off" --mesh "$base.off" > "$base.measure"
-  if [ "$noise" = 0 ]; then
+  if [ "$noise" = 0 ] && [ "$seed" = "$first_seed" ]; then
     "$measure" --truth "$data/$part.off" --mesh "$base.off" --render "$results/${part}_${variant}" > /dev/null
   fi
 }
 
-row() { # part noise variant
-  local base="$work/${1}_${2}_${3}" m s
+row() { # part noise seed variant
+  local base="$work/${1}_${2}_s${3}_${4}" m s
   m="$base.measure"; s="$base.stats"
   if [ ! -f "$m" ]; then
-    echo "| $1 | $2 | $3 | failed | | | | | | | | | |"
+    echo "| $1 | $2 | $3 | $4 | failed: $(tail -n 1 "$base.log" 2>/dev/null | tr '|' '/' | cut -c1-120) | | | | | | | | | |"
     return
   fi
   local valid="yes"
   [ "$(value closed "$m")" = 1 ] && [ "$(value manifold "$m")" = 1 ] && [ "$(value self_intersecting "$m")" = 0 ] || valid="NO"
-  awk -v part="$1" -v noise="$2" -v variant="$3" -v valid="$valid" \
+  [ "$(value stopped "$s")" = 1 ] && valid="NO (stopped)"
+  awk -v part="$1" -v noise="$2" -v seed="$3" -v variant="$4" -v valid="$valid" \
       -v tri="$(value triangles "$m")" -v mean="$(value mean_distance "$m")" -v max="$(value max_distance "$m")" \
       -v bmean="$(value band_mean_distance "$m")" -v bmax="$(value band_max_distance "$m")" \
       -v bnorm="$(value band_normal_angle "$m")" -v tru="$(value crease_true_angle "$m")" \
       -v reach="$(value crease_reached_angle "$m")" -v err="$(value crease_angle_error "$m")" \
       -v w10="$(value crease_within_10 "$m")" -v t="$(value seconds_total "$s")" \
       -v tm="$(value seconds_meshing "$s")" 'BEGIN {
-    printf "| %s | %s | %s | %d | %.2e | %.2e | %.2e | %.2e | %.1f | %.1f / %.1f | %.1f | %.0f%% | %.0f (%.0f) | %s |\n",
-      part, noise, variant, tri, mean, max, bmean, bmax, bnorm, reach, tru, err, 100 * w10, t, tm, valid }'
+    printf "| %s | %s | %s | %s | %d | %.2e | %.2e | %.2e | %.2e | %.1f | %.1f / %.1f | %.1f | %.0f%% | %.0f (%.0f) | %s |\n",
+      part, noise, seed, variant, tri, mean, max, bmean, bmax, bnorm, reach, tru, err, 100 * w10, t, tm, valid }'
+}
+
+first_seed="${seeds%% *}"
+variants="plain features"
+[ "$true_curves" = 1 ] && [ "$extraction" = 1 ] && variants="$variants true"
+
+# one line per part, noise and run over the seeds: valid runs, then medians over the valid ones
+summary_row() { # part noise variant
+  local seed base valid=0 total=0 times="" bands="" tris=""
+  for seed in $seeds; do
+    base="$work/${1}_${2}_s${seed}_${3}"
+    total=$((total + 1))
+    [ -f "$base.measure" ] || continue
+    [ "$(value closed "$base.measure")" = 1 ] && [ "$(value manifold "$base.measure")" = 1 ] &&
+      [ "$(value self_intersecting "$base.measure")" = 0 ] && [ "$(value stopped "$base.stats")" = 0 ] || continue
+    valid=$((valid + 1))
+    times="$times $(value seconds_total "$base.stats")"
+    bands="$bands $(value band_mean_distance "$base.measure")"
+    tris="$tris $(value triangles "$base.measure")"
+  done
+  median() { echo "$1" | tr ' ' '\n' | grep . | sort -g | awk '{v[NR] = $1} END {if(NR) print v[int((NR + 1) / 2)]; else print "-"}'; }
+  echo "| $1 | $2 | $3 | $valid / $total | $(median "$times") | $(median "$bands") | $(median "$tris") |"
 }
 
 declare -a cases=()
@@ -121,12 +150,13 @@ for part in $parts; do
   "$measure" --truth "$data/$part.off" --true-curves-to "$work/${part}_true_curves.txt"
   "$measure" --truth "$data/$part.off" --render "$results/${part}_truth"
   for noise in $noises; do
-    "$measure" --truth "$data/$part.off" --sample-to "$work/${part}_${noise}.xyz" --points "$points" --noise "$noise"
-    variants="plain features"
-    [ "$true_curves" = 1 ] && [ "$extraction" = 1 ] && variants="$variants true"
-    for variant in $variants; do
-      run_case "$part" "$noise" "$variant" || true
-      cases+=("$part $noise $variant")
+    for seed in $seeds; do
+      "$measure" --truth "$data/$part.off" --sample-to "$work/${part}_${noise}_s${seed}.xyz" --points "$points" \
+                 --noise "$noise" --seed "$seed"
+      for variant in $variants; do
+        run_case "$part" "$noise" "$seed" "$variant" || true
+        cases+=("$part $noise $seed $variant")
+      done
     done
   done
 done
@@ -135,7 +165,8 @@ done
   echo "# Feature-protected meshing: with and without the feature curves"
   echo
   echo "Generated by \`scripts/bench_meshing.sh\` on $(date -u +%Y-%m-%d) ($(nproc) cores)."
-  echo "Input: $points points sampled uniformly on each CGAL sample mesh; noise: radius of a uniform ball,"
+  echo "Input: $points points sampled uniformly on each CGAL sample mesh, one independent draw per seed"
+  echo "(seeds: $seeds); noise: radius of a uniform ball,"
   echo "fraction of the bounding-box diagonal dB. Pipeline: jet normals + MST orientation, Poisson"
   echo "implicit function, Mesh_3 (facet size 3s, facet distance 0.1s, edge size 3s, angle 25; s = spacing),"
   echo "manifold. *plain*: \`--no-features\`; *features*: curves protected, two-sided normals near the"
@@ -153,10 +184,29 @@ done
   echo "output facet normal and the nearest true facet normal, in the band. Crease angle: turning"
   echo "angle between the output normals found 0.5% dB into each of the two faces, against the true"
   echo "angle, averaged along the true creases away from corners; error: mean |reached - true|."
-  echo "Time: total seconds (Mesh_3 alone in parentheses). Valid: closed, manifold, no self-intersection."
+  echo "Time: total seconds (Mesh_3 alone in parentheses). Valid: closed, manifold, no self-intersection,"
+  echo "and Mesh_3 not stopped (by the time limit, or by the vertex limit of 2 per input point that catches a"
+  echo "runaway refinement)."
   echo
-  echo "| part | noise | run | triangles | mean dist | max dist | band mean | band max | band normal (deg) | crease angle reached / true | angle error | within 10 deg | time s | valid |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "## Over the seeds"
+  echo
+  echo "Valid: runs that gave a closed, manifold, self-intersection free mesh, of all runs; medians over"
+  echo "the valid runs (time in seconds, crease-band mean distance in dB, triangles)."
+  echo
+  echo "| part | noise | run | valid | median time s | median band mean | median triangles |"
+  echo "|---|---|---|---|---|---|---|"
+  for part in $parts; do
+    for noise in $noises; do
+      for variant in $variants; do
+        summary_row "$part" "$noise" "$variant"
+      done
+    done
+  done
+  echo
+  echo "## Every run"
+  echo
+  echo "| part | noise | seed | run | triangles | mean dist | max dist | band mean | band max | band normal (deg) | crease angle reached / true | angle error | within 10 deg | time s | valid |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   for c in "${cases[@]}"; do
     # shellcheck disable=SC2086
     row $c
@@ -164,9 +214,11 @@ done
   echo
   echo "## Against the acceptance criteria"
   echo
+  echo "(first seed, $first_seed)"
+  echo
   for part in $parts; do
     for noise in $noises; do
-      p="$work/${part}_${noise}_plain.measure"; f="$work/${part}_${noise}_features.measure"
+      p="$work/${part}_${noise}_s${first_seed}_plain.measure"; f="$work/${part}_${noise}_s${first_seed}_features.measure"
       [ -f "$p" ] && [ -f "$f" ] || continue
       awk -v part="$part" -v noise="$noise" -v bp="$(value band_mean_distance "$p")" -v bf="$(value band_mean_distance "$f")" \
           -v tp="$(value triangles "$p")" -v tf="$(value triangles "$f")" -v ef="$(value crease_angle_error "$f")" \
@@ -179,7 +231,7 @@ done
   echo "## Pictures"
   echo
   echo "Same cameras for every mesh of a part: \`<part>_<run>_full.png\` and a close-up of a long crease"
-  echo "\`<part>_<run>_closeup.png\` (runs: truth, plain, features), noise 0."
+  echo "\`<part>_<run>_closeup.png\` (runs: truth, plain, features), noise 0, first seed."
   echo
   for part in $parts; do
     echo "- $part: ![truth](${part}_truth_closeup.png) ![plain](${part}_plain_closeup.png) ![features](${part}_features_closeup.png)"

@@ -57,7 +57,8 @@ const char* usage =
   "Meshes the surface sampled by <points> (XYZ, PLY, OFF, ...: only the positions are read)\n"
   "with Mesh_3 over a Poisson implicit surface, the extracted sharp feature curves protected.\n"
   "Writes <output>.off and <output>.ply. Exit status: 0 success, 1 bad input or failure,\n"
-  "3 mesh written but not closed, not manifold or self-intersecting.\n"
+  "3 mesh written but incomplete (Mesh_3 stopped) or not closed, not manifold or\n"
+  "self-intersecting; the last line on stderr says why.\n"
   "\n"
   "options:\n"
   "  --no-features          the same pipeline without any feature curve (for comparison)\n"
@@ -73,7 +74,8 @@ const char* usage =
   "  --edge-size X            distance 0.1s or the noise scale if larger, edge size\n"
   "                           (along the curves) 3s,\n"
   "  --facet-angle DEG        facet angle 25\n"
-  "  --time-limit SEC       stop Mesh_3 after this long (default 1800; 0: none)\n"
+  "  --time-limit SEC       stop Mesh_3 after this long (default 1800; 0: none); Mesh_3 is\n"
+  "                         also stopped beyond 2 vertices per input point (a runaway)\n"
   "  --curves-out FILE      write the curves given to Mesh_3 (one polyline per line)\n"
   "  --stats FILE           write timings and counts as key=value lines\n"
   "  --quiet                no progress and no summary\n"
@@ -343,13 +345,11 @@ int main(int argc, char* argv[])
               << "time: extraction " << seconds_extraction << " s, normals " << result.seconds_normals
               << " s, Poisson " << result.seconds_poisson << " s, Mesh_3 " << result.seconds_meshing
               << " s, total " << seconds_total << " s\n";
-    if(!result.error.empty())
-      std::cout << "warning: " << result.error << " (the mesh may be incomplete)\n";
   }
   if(!stats_path.empty()) {
     std::ofstream stats(stats_path);
     stats << "points=" << points.size() << "\nspacing=" << result.spacing << "\nnoise=" << result.noise
-          << "\nfacet_distance=" << result.sizes.facet_distance
+          << "\nfacet_distance=" << result.sizes.facet_distance << "\nfar_field=" << result.far_field
           << "\nfeatures=" << (features ? 1 : 0) << "\ncurves_in=" << result.repair.input_curves
           << "\ncurves_protected=" << result.protected_curves
           << "\ncurve_problems=" << result.curve_problems.size()
@@ -362,5 +362,10 @@ int main(int argc, char* argv[])
           << "\nseconds_poisson=" << result.seconds_poisson << "\nseconds_meshing=" << result.seconds_meshing
           << "\nseconds_total=" << seconds_total << "\n";
   }
-  return check.valid() ? EXIT_SUCCESS : 3;
+  // a stopped Mesh_3 leaves an incomplete mesh, valid or not: say why, in one line
+  if(result.stopped)
+    std::cerr << "mesh_with_sharp_features: incomplete mesh written: " << result.error << std::endl;
+  else if(!check.valid())
+    std::cerr << "mesh_with_sharp_features: mesh written but " << check.summary() << std::endl;
+  return check.valid() && !result.stopped ? EXIT_SUCCESS : 3;
 }

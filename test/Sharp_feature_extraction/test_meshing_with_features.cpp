@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <vector>
 
@@ -146,6 +148,49 @@ TEST_CASE("curve repair splits a curve where another curve ends on it (a T-junct
   sfe_meshing::repair_feature_curves_for_mesh_3(curves, options);
   REQUIRE(curves.size() == 3);
   CHECK(sfe_meshing::find_mesh_3_feature_problems(curves, 0.02).empty());
+}
+
+TEST_CASE("curve repair: two curves that leave a shared corner together, their vertices a small "
+          "fraction of the spacing apart without being shared, are made Mesh_3-safe",
+          "[meshing]")
+{
+  // two curves from one corner, 0.02 s apart over 5 s (a crease found twice near a corner:
+  // Mesh_3's protecting balls there would have to shrink to the gap), then diverging, and a
+  // third curve leaving the corner at 90 degrees, which is fine
+  const double s = 0.01;
+  const Point_3 corner(0, 0, 0);
+  Curve a, b, c;
+  for(int i = 0; i <= 40; ++i) {
+    a.points.push_back(Point_3(0.25 * s * i, 0, 0));
+    const double gap = i <= 20 ? 0.02 * s * (i > 0) : 0.02 * s + 0.5 * s * (i - 20);
+    b.points.push_back(Point_3(0.25 * s * i, gap, 0));
+    c.points.push_back(Point_3(0, 0, 0.25 * s * i));
+  }
+  b.points.front() = corner;
+  std::vector<Curve> curves = {a, b, c};
+  const double tol = 1.5 * s;
+  CHECK_FALSE(sfe_meshing::find_mesh_3_feature_problems(curves, tol).empty());
+
+  sfe_meshing::Curve_repair_options options;
+  options.snap_tolerance = tol;
+  options.minimum_length = 3 * s;
+  const sfe_meshing::Curve_repair_report report = sfe_meshing::repair_feature_curves_for_mesh_3(curves, options);
+  INFO(report.summary());
+  CHECK(sfe_meshing::find_mesh_3_feature_problems(curves, tol).empty());
+  // no two vertices of different curves closer than a tenth of the spacing unless equal
+  double closest = 1;
+  for(std::size_t i = 0; i < curves.size(); ++i)
+    for(std::size_t j = i + 1; j < curves.size(); ++j)
+      for(const Point_3& p : curves[i].points)
+        for(const Point_3& q : curves[j].points)
+          if(p != q)
+            closest = (std::min)(closest, std::sqrt(CGAL::squared_distance(p, q)));
+  CHECK(closest > 0.1 * s);
+  // the perpendicular curve is kept
+  bool perpendicular_kept = false;
+  for(const Curve& curve : curves)
+    perpendicular_kept = perpendicular_kept || curve.points.back() == c.points.back();
+  CHECK(perpendicular_kept);
 }
 
 TEST_CASE("a chamfered box sampled with 20k points and meshed with its creases is closed, manifold "

@@ -55,6 +55,7 @@ struct Curve_repair_report
   std::size_t sharp_turn_splits = 0;
   std::size_t dropped_short = 0;
   std::size_t dropped_parallel = 0;    ///< curves dropped because they ran along a longer one (duplicates)
+  std::size_t dropped_close = 0;       ///< curves dropped because they came too close to another one
   std::size_t discarded_normals = 0;   ///< curves whose normals did not match their points
 
   std::string summary() const
@@ -65,7 +66,7 @@ struct Curve_repair_report
       {"points removed", removed_points}, {"ends snapped", snapped_ends},
       {"loops closed", closed_loops}, {"junction splits", junction_splits},
       {"sharp-turn splits", sharp_turn_splits}, {"short curves dropped", dropped_short},
-      {"parallel duplicates dropped", dropped_parallel},
+      {"parallel duplicates dropped", dropped_parallel}, {"too close curves dropped", dropped_close},
       {"normals discarded", discarded_normals}};
     for(const auto& item : items)
       if(item.second > 0)
@@ -521,6 +522,67 @@ void resolve_interior_contacts(std::vector<Curve>& curves, double tol, Curve_rep
   apply_splits(curves, splits);
 }
 
+/// Two vertices closer than the tolerance that are not the same point, on two curves (or far
+/// apart along one curve), and not explained by a junction the curves share.
+struct Unshared_contact
+{
+  std::size_t a = 0, i = 0, b = 0, j = 0; // curve and vertex index of each vertex
+  double distance = 0;
+};
+
+/// Near a point two curves share, their vertices are close because both curves start there;
+/// they are fine as long as the curves leave it at an angle (then the gap grows like the
+/// distance to the junction times the angle). Below this angle (degrees) the two run together:
+/// Mesh_3's protecting balls there must shrink to the gap, and the refinement around them runs
+/// away. Noisy extracted curves leaving one corner differ by more than that.
+constexpr double minimum_departure_angle = 5;
+
+/// lists the vertex pairs Mesh_3 cannot protect apart: closer than `tol`, not the same point,
+/// and not two curves leaving a shared point at `minimum_departure_angle` or more.
+template <typename Curve, typename Point_3>
+std::vector<Unshared_contact> find_unshared_contacts(const std::vector<Curve>& curves, double tol)
+{
+  const double sin_departure = std::sin(minimum_departure_angle * 3.14159265358979323846 / 180.);
+  std::vector<std::pair<std::size_t, std::size_t>> vertices;
+  Spatial_grid<Point_3> grid(tol);
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    for(std::size_t i = 0; i < curves[c].points.size(); ++i) {
+      grid.insert(curves[c].points[i], vertices.size());
+      vertices.push_back(std::make_pair(c, i));
+    }
+  std::vector<std::vector<double>> arcs;
+  for(const Curve& c : curves)
+    arcs.push_back(arc_lengths(c));
+  std::vector<Unshared_contact> contacts;
+  for(std::size_t id = 0; id < vertices.size(); ++id) {
+    const std::size_t a = vertices[id].first, i = vertices[id].second;
+    const Point_3& pa = curves[a].points[i];
+    grid.for_each_within(pa, tol, [&](std::size_t other, double d2) {
+      const std::size_t b = vertices[other].first, j = vertices[other].second;
+      if(other <= id || curves[b].points[j] == pa)
+        return;
+      const Point_3& pb = curves[b].points[j];
+      const double d = std::sqrt(d2);
+      // along one curve, neighbours are close: only far-apart stretches count (cyclically on
+      // a loop)
+      if(a == b) {
+        const double along = std::abs(arcs[a][i] - arcs[a][j]);
+        const bool closed = curves[a].points.front() == curves[a].points.back();
+        if((std::min)(along, closed ? arcs[a].back() - along : along) < 4 * tol)
+          return;
+      }
+      for(const Point_3* e : {&curves[a].points.front(), &curves[a].points.back()})
+        if(*e == curves[b].points.front() || *e == curves[b].points.back()) {
+          const double r = (std::max)(point_distance(pa, *e), point_distance(pb, *e));
+          if(d >= sin_departure * r)
+            return;
+        }
+      contacts.push_back(Unshared_contact{a, i, b, j, d});
+    });
+  }
+  return contacts;
+}
+
 /// Splits where the curve turns by more than the angle, measured between chords reaching at
 /// least `reach` along the curve on each side (so that vertex noise does not count as a turn).
 template <typename Curve>
@@ -568,6 +630,33 @@ void split_sharp_turns(std::vector<Curve>& curves, double reach, double angle_de
 
 } // namespace repair_internal
 
+/// The last resort of the repair, also for curves moved after it: of two curves that come
+/// closer than `tolerance` without sharing a point there (an unshared contact, as listed by
+/// `find_mesh_3_feature_problems()`), the shorter is dropped (a curve that comes back onto
+/// itself is dropped too). Without it that crease is meshed from the implicit surface alone;
+/// with it Mesh_3 would shrink its protecting balls to the gap and not finish.
+template <typename GeomTraits>
+void drop_feature_curves_in_contact(std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
+                                    double tolerance, Curve_repair_report& report)
+{
+  typedef CGAL::Feature_polyline<GeomTraits> Curve;
+  using namespace repair_internal;
+  std::vector<bool> dropped(curves.size(), false);
+  for(const Unshared_contact& contact :
+      find_unshared_contacts<Curve, typename GeomTraits::Point_3>(curves, tolerance)) {
+    if(dropped[contact.a] || dropped[contact.b])
+      continue;
+    dropped[curve_length(curves[contact.a]) < curve_length(curves[contact.b]) ? contact.a : contact.b] = true;
+    ++report.dropped_close;
+  }
+  report.output_curves -= std::count(dropped.begin(), dropped.end(), true);
+  std::vector<Curve> kept;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(!dropped[c])
+      kept.push_back(std::move(curves[c]));
+  curves = std::move(kept);
+}
+
 template <typename GeomTraits>
 std::vector<std::string> find_mesh_3_feature_problems(
   const std::vector<CGAL::Feature_polyline<GeomTraits>>& curves, double tolerance);
@@ -577,7 +666,8 @@ std::vector<std::string> find_mesh_3_feature_problems(
 /// (preferring an exactly shared end, then a point of `junction_hints`, such as the corners of
 /// the curve network); closes loops whose ends meet; splits curves where an end or another
 /// curve touches them; splits sharp turns; drops curves too short to mesh and curves that
-/// duplicate a longer one. Normals stay attached to their points (a curve whose normals do not
+/// duplicate a longer one; last, drops the shorter of two curves that still come closer than
+/// the tolerance without sharing a point there (see `find_mesh_3_feature_problems()`). Normals stay attached to their points (a curve whose normals do not
 /// match its points loses them). Corner indices are reset: they refer to the input network.
 template <typename GeomTraits>
 Curve_repair_report repair_feature_curves_for_mesh_3(
@@ -657,12 +747,17 @@ Curve_repair_report repair_feature_curves_for_mesh_3(
     clean_up();
   }
   report.output_curves = curves.size();
+  if(tol > 0)
+    drop_feature_curves_in_contact(curves, tol, report);
   return report;
 }
 
 /// lists, one line each, the reasons Mesh_3 could reject `curves` as features: non-finite or
-/// repeated consecutive points, ends that nearly (but not exactly) meet, and ends or vertices
-/// touching the interior of a curve. An empty list means the curves are safe to protect.
+/// repeated consecutive points, ends that nearly (but not exactly) meet, ends or vertices
+/// touching the interior of a curve, and vertices of two curves (or of one curve, far apart
+/// along it) closer than `tolerance` without being one point, unless the curves leave a point
+/// they share at `repair_internal::minimum_departure_angle` or more. An empty list means the
+/// curves are safe to protect.
 template <typename GeomTraits>
 std::vector<std::string> find_mesh_3_feature_problems(
   const std::vector<CGAL::Feature_polyline<GeomTraits>>& curves, double tolerance)
@@ -714,6 +809,13 @@ std::vector<std::string> find_mesh_3_feature_problems(
         say(c, "end lies on the interior of curve " + std::to_string(interior_ids[id].first));
       });
     }
+  }
+  for(const Unshared_contact& contact :
+      find_unshared_contacts<CGAL::Feature_polyline<GeomTraits>, Point_3>(curves, tolerance)) {
+    std::ostringstream what;
+    what << "vertex " << contact.i << " is " << contact.distance << " from vertex " << contact.j
+         << " of curve " << contact.b << " without sharing a point";
+    say(contact.a, what.str());
   }
   return problems;
 }

@@ -22,13 +22,17 @@
 #include <CGAL/Random.h>
 #include <CGAL/make_mesh_3.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -48,10 +52,38 @@ struct Mesh_sizes
 struct Surface_meshing_limits
 {
   double time_limit = 0;                  ///< seconds; 0: none
-  std::size_t maximal_number_of_vertices = 0; ///< 0: none
+  /// 0: none (`mesh_point_cloud()` sets one from the number of input points)
+  std::size_t maximal_number_of_vertices = 0;
   double relative_error_bound = 1e-6;     ///< of the surface intersections, relative to the bounding sphere
   unsigned seed = 0;                      ///< of Mesh_3's random initial points
+  /// Where the function is negative on the faces of the domain's cube (`far_field_samples`
+  /// squared points per face), it is lifted by this many times its most negative value there:
+  /// 10, so that the spurious patch, deeper inside the cube than on its faces but of the same
+  /// order, is lifted too.
+  double far_field_margin = 10;
+  int far_field_samples = 32;
 };
+
+/// the largest of 0 and -f on a `samples` x `samples` grid on each face of the cube of half
+/// side `radius` around `center`: how far below zero the function is where it should be
+/// outside.
+template <typename Function, typename Point_3>
+double far_field_level(const Function& f, const Point_3& center, double radius, int samples)
+{
+  double level = 0;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = -1; side <= 1; side += 2)
+      for(int i = 0; i < samples; ++i)
+        for(int j = 0; j < samples; ++j) {
+          double c[3];
+          c[axis] = side * radius;
+          c[(axis + 1) % 3] = radius * (2. * (i + 0.5) / samples - 1);
+          c[(axis + 2) % 3] = radius * (2. * (j + 0.5) / samples - 1);
+          const Point_3 x(center.x() + c[0], center.y() + c[1], center.z() + c[2]);
+          level = (std::max)(level, -CGAL::to_double(f(x)));
+        }
+  return level;
+}
 
 /// A closed surface as a triangle soup, facets oriented outward.
 template <typename Point_3>
@@ -67,6 +99,7 @@ struct Surface_meshing_result
   Triangle_soup_3<Point_3> surface;
   std::size_t protected_vertices = 0; ///< vertices Mesh_3 put on the feature curves
   bool stopped = false;               ///< the time or vertex limit was reached
+  double far_field = 0;               ///< the lift added to the function
   std::string error;                  ///< empty on success
 };
 
@@ -74,6 +107,15 @@ struct Surface_meshing_result
 /// polylines `features` (each a `std::vector<Point_3>`; closed ones repeat their first point,
 /// curves meet only at shared end points: see `repair_feature_curves_for_mesh_3()`).
 /// `heartbeat(seconds)` is called about 5 times per second while Mesh_3 runs.
+///
+/// The function must be positive on the faces of the cube around `bound`, which bounds the
+/// domain. An implicit function fitted to samples (Poisson's) is zero far from them up to the
+/// solver's noise, of either sign: a slightly negative patch there is a spurious inside that
+/// the cube cuts open, where Mesh_3 refines the cut forever (then asserts that a point "is
+/// already inserted on surface"), or from which it finds no surface at all. Where the faces are
+/// negative, the function is lifted by a margin times their most negative value
+/// (`Surface_meshing_result::far_field`; zero when they are all positive): the true surface
+/// moves inward by that much, far below the facet distance of a sampled surface.
 template <typename GeomTraits, typename Function>
 Surface_meshing_result<typename GeomTraits::Point_3>
 mesh_implicit_surface(const Function& function, const typename GeomTraits::Sphere_3& bound,
@@ -92,7 +134,12 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
 
   Surface_meshing_result<Point_3> result;
   CGAL::Random random(limits.seed);
-  std::function<double(const Point_3&)> f = function;
+  const double radius = std::sqrt(CGAL::to_double(bound.squared_radius()));
+  result.far_field = limits.far_field_margin *
+                     far_field_level(function, bound.center(), radius, limits.far_field_samples);
+  std::function<double(const Point_3&)> f = [&function, &result](const Point_3& x) {
+    return CGAL::to_double(function(x)) + result.far_field;
+  };
   Domain domain(Implicit_domain::create_implicit_mesh_domain(
     f, bound, params::relative_error_bound = limits.relative_error_bound, params::p_rng = &random));
   if(!features.empty())
@@ -142,6 +189,9 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
     result.stopped = true;
     result.error = CGAL::mesh_error_string(error_code);
   }
+  // where the refinement got stuck: the shortest edge of the surface facets
+  double shortest = std::numeric_limits<double>::infinity();
+  Point_3 shortest_at = CGAL::ORIGIN;
 
   // the facets of the complex, each oriented away from the cell that is inside the domain
   const Tr& tr = c3t3.triangulation();
@@ -166,6 +216,13 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
                           index_of(cell->vertex((i + 3) & 3))};
     const Point_3 inside = tr.geom_traits().construct_point_3_object()(cell->vertex(i)->point());
     const std::vector<Point_3>& p = result.surface.points;
+    for(int k = 0; k < 3; ++k) {
+      const double l = CGAL::to_double(CGAL::squared_distance(p[t[k]], p[t[(k + 1) % 3]]));
+      if(l < shortest) {
+        shortest = l;
+        shortest_at = CGAL::midpoint(p[t[k]], p[t[(k + 1) % 3]]);
+      }
+    }
     if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
       std::swap(t[1], t[2]);
     result.surface.triangles.push_back(t);
@@ -173,6 +230,12 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
   for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
     if(v->in_dimension() == 0 || v->in_dimension() == 1)
       ++result.protected_vertices;
+  if(result.stopped && !result.surface.triangles.empty()) {
+    std::ostringstream where;
+    where.precision(6);
+    where << " before converging; shortest mesh edge " << std::sqrt(shortest) << " at (" << shortest_at << ")";
+    result.error += where.str();
+  }
   if(result.surface.triangles.empty() && result.error.empty())
     result.error = "Mesh_3 found no surface (is the implicit function negative inside the bounding sphere?)";
   return result;

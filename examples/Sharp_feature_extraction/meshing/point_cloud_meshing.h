@@ -61,6 +61,11 @@ struct Point_cloud_meshing_options
   /// Curves are snapped and dropped at these multiples of s (feature_curve_repair.h).
   double snap_tolerance = 1.5;
   double minimum_curve_length = 3;
+  /// Mesh_3 is stopped when its triangulation holds more vertices than this many per input
+  /// point (unless `limits` sets a vertex limit). A mesh finer than the sampling is not
+  /// supported by the data: the refinement is running away (a valid benchmark mesh needs
+  /// about 0.35 vertices per point), and the limit bounds the time whatever the machine.
+  double maximal_vertices_per_point = 2;
 
   Surface_meshing_limits limits;
 };
@@ -74,6 +79,7 @@ struct Point_cloud_meshing_result
   bool stopped = false;
   double spacing = 0;
   double noise = 0; ///< noise scale (RMS distance to local planes, median)
+  double far_field = 0; ///< lift of the implicit function (a distance: see `mesh_implicit_surface()`)
   Mesh_sizes sizes;
   Curve_repair_report repair;
   std::vector<CGAL::Feature_polyline<GeomTraits>> curves; ///< the curves after the repair
@@ -209,7 +215,6 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   repair_options.snap_tolerance = options.snap_tolerance * s;
   repair_options.minimum_length = options.minimum_curve_length * s;
   result.repair = repair_feature_curves_for_mesh_3(curves, repair_options, corner_hints);
-  result.curve_problems = find_mesh_3_feature_problems(curves, repair_options.snap_tolerance);
 
   // 3. oriented normals, corrected near the creases
   std::vector<Point_with_normal> pwn;
@@ -240,7 +245,10 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
         for(std::size_t i = 1; i + 1 < c.points.size(); ++i)
           if(creases.project_onto_crease(c.points[i], s))
             ++result.projected_vertices;
+    // a moved vertex may now come too close to another curve
+    drop_feature_curves_in_contact(curves, repair_options.snap_tolerance, result.repair);
   }
+  result.curve_problems = find_mesh_3_feature_problems(curves, repair_options.snap_tolerance);
   if(options.correct_normals) {
     for(Point_with_normal& p : pwn) {
       Vector_3 n;
@@ -275,12 +283,8 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   function.base = &poisson;
   function.creases = options.sharpen_creases ? &creases : nullptr;
   function.base_scale = 1. / meshing_internal::gradient_norm(poisson, pwn, s);
-  result.seconds_poisson = seconds_since(start);
-  report("poisson", 1, result.seconds_poisson);
 
-  // 5. the mesh
-  start = std::chrono::steady_clock::now();
-  report("meshing", -1, 0);
+  // Mesh_3's domain: a sphere around the cloud (its bounding cube, in fact)
   CGAL::Bbox_3 box;
   for(const Point_3& p : points)
     box += p.bbox();
@@ -290,19 +294,31 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
                                                CGAL::square(box.ymax() - box.ymin()) +
                                                CGAL::square(box.zmax() - box.zmin()));
   const double radius = 1.1 * half_diagonal + 5 * s;
+
+  result.seconds_poisson = seconds_since(start);
+  report("poisson", 1, result.seconds_poisson);
+
+  // 5. the mesh
+  start = std::chrono::steady_clock::now();
+  report("meshing", -1, 0);
   std::vector<std::vector<Point_3>> features;
   if(options.protect_curves)
     for(const auto& c : curves)
       features.push_back(c.points);
   result.protected_curves = features.size();
+  Surface_meshing_limits limits = options.limits;
+  if(limits.maximal_number_of_vertices == 0)
+    limits.maximal_number_of_vertices =
+      static_cast<std::size_t>(options.maximal_vertices_per_point * static_cast<double>(points.size()));
   Surface_meshing_result<Point_3> mesh = mesh_implicit_surface<GeomTraits>(
     function, typename GeomTraits::Sphere_3(center, radius * radius), features, result.sizes,
-    options.limits, [&](double seconds) { report("meshing", -1, seconds); });
+    limits, [&](double seconds) { report("meshing", -1, seconds); });
   result.seconds_meshing = seconds_since(start);
   report("meshing", 1, result.seconds_meshing);
   result.surface = std::move(mesh.surface);
   result.curves = std::move(curves);
   result.protected_vertices = mesh.protected_vertices;
+  result.far_field = mesh.far_field;
   result.stopped = mesh.stopped;
   result.error = mesh.error;
   return result;
