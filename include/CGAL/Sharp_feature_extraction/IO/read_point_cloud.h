@@ -294,9 +294,10 @@ public:
 private:
   bool read_token(double& v)
   {
-    if(!(is_ >> token_))
+    if(!(is_ >> token_) || !numbers_.parse(token_) || numbers_.values.size() != 1)
       return false;
-    return numbers_.parse(token_) && numbers_.values.size() == 1 && ((v = numbers_.values[0]), true);
+    v = numbers_.values[0];
+    return true;
   }
 
   template <typename T>
