@@ -7,8 +7,8 @@
 // the curve vertices, edges, both surface normals and corner flags. Prints a summary.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/read_points.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/IO/read_point_cloud.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
 
@@ -108,8 +108,9 @@ int main(int argc, char** argv)
 #endif
 
   std::vector<Point> points;
-  if(!CGAL::IO::read_points(input, std::back_inserter(points)))
-    fail("cannot read points from '" + input + "' (expected a readable .xyz, .ply or .off file)");
+  std::string why;
+  if(!CGAL::IO::read_point_cloud(input, points, &why))
+    fail("cannot read '" + input + "': " + why);
   if(points.empty())
     fail("'" + input + "' contains no points");
 

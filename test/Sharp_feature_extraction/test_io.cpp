@@ -1,18 +1,25 @@
 // I/O: write_polylines / read_polylines round trip (same doubles, so shared corners and closed
-// loops stay exact), rejection of malformed lines, and the counts in the PLY header.
+// loops stay exact), rejection of malformed lines, the counts in the PLY header, and
+// read_point_cloud (the CLI's reader): XYZ, OFF and PLY (ASCII and binary) read exactly, and
+// malformed files, among them a PLY vertex element without y and z, rejected with a reason.
 
 #include "analytic_shapes.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/IO/read_point_cloud.h>
 #include <CGAL/Sharp_feature_extraction/IO/read_polylines.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -125,6 +132,7 @@ TEST_CASE("read_polylines rejects malformed lines", "[io]")
   CHECK_FALSE(reads("two 0 0 0 1 1 1\n"));           // no count
   CHECK_FALSE(reads("2 0 0 0 1 a 1\n"));             // not a number
   CHECK_FALSE(reads("1 0 0 0\n2 0 0 0 1 1\n"));      // a good line, then a bad one
+  CHECK_FALSE(reads("4000000000000000000 0 0 0\n")); // a count the line cannot hold: no room reserved for it
   std::vector<std::vector<Point_3>> partial;
   CHECK_FALSE(reads("1 0 0 0\n2 0 0 0 1 1\n", partial));
   CHECK(partial.size() == 1);                        // documented: keeps what was read before
@@ -229,4 +237,210 @@ TEST_CASE("write_PLY_feature_curves writes a valid empty file for an empty netwo
   CHECK(text.find("element edge 0\n") != std::string::npos);
   CHECK(text.size() >= std::string("end_header\n").size());
   CHECK(text.compare(text.size() - 11, 11, "end_header\n") == 0);
+}
+
+namespace {
+
+/// Reads `text` as a point cloud in `format`; `why` receives the reason of a failure.
+bool reads_cloud(const std::string& text, const std::string& format, std::vector<Point_3>& points,
+                 std::string& why)
+{
+  std::istringstream is(text, std::ios::in | std::ios::binary);
+  return CGAL::IO::read_point_cloud(is, format, points, &why);
+}
+
+/// The reason why `text` is rejected, or "accepted".
+std::string rejection(const std::string& text, const std::string& format)
+{
+  std::vector<Point_3> points;
+  std::string why;
+  return reads_cloud(text, format, points, why) ? std::string("accepted") : why;
+}
+
+bool mentions(const std::string& reason, const std::string& part)
+{
+  return reason != "accepted" && reason.find(part) != std::string::npos;
+}
+
+/// Appends `value` in the byte order of a `binary_little_endian` (or big) PLY body.
+template <typename T>
+void put_binary(std::string& body, T value, bool little_endian)
+{
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  const std::uint16_t one = 1;
+  const bool host_little = *reinterpret_cast<const unsigned char*>(&one) == 1;
+  if(host_little != little_endian)
+    std::reverse(bytes, bytes + sizeof(T));
+  body.append(bytes, sizeof(T));
+}
+
+std::string ply_header(const std::string& format, const std::string& elements)
+{
+  return "ply\nformat " + format + " 1.0\ncomment written by test_io\n" + elements + "end_header\n";
+}
+
+} // namespace
+
+TEST_CASE("read_point_cloud rejects a PLY vertex element with only an x property (ASCII and binary)", "[io]")
+{
+  // CGAL::IO::read_points, which the CLI used before, reads these as points with y = z = 0.
+  const std::string x_only = "element vertex 3\nproperty float x\n";
+  CHECK(mentions(rejection(ply_header("ascii", x_only) + "1\n2\n3\n", "ply"), "no 'y' property"));
+  for(const bool little : {true, false})
+  {
+    std::string binary = ply_header(little ? "binary_little_endian" : "binary_big_endian", x_only);
+    for(float x : {1.f, 2.f, 3.f})
+      put_binary(binary, x, little);
+    CHECK(mentions(rejection(binary, "ply"), "no 'y' property"));
+  }
+  CHECK(mentions(rejection(ply_header("ascii", "element vertex 1\nproperty float x\nproperty float y\n") + "1 2\n", "ply"),
+                 "no 'z' property"));
+  CHECK(mentions(rejection(ply_header("ascii", "element face 0\nproperty float x\n"), "ply"), "no vertex element"));
+}
+
+TEST_CASE("read_point_cloud reads ASCII and binary PLY exactly, whatever the types and the other elements", "[io]")
+{
+  std::vector<Point_3> points;
+  std::string why;
+  // Integer-typed coordinates (CGAL's reader asserts on them), properties around x, y and z, an
+  // element before the vertices with a list, and faces after them.
+  const std::string elements = "element material 1\nproperty list uchar int ids\nproperty uchar kind\n"
+                               "element vertex 2\nproperty double nx\nproperty int x\nproperty float z\n"
+                               "property short y\nelement face 1\nproperty list uchar int vertex_indices\n";
+  REQUIRE(reads_cloud(ply_header("ascii", elements) + "3 7 8 9 1\n0.5 1 3.25 -2\n0 -4 0.125 5\n2 0 1\n", "ply",
+                      points, why));
+  REQUIRE(points.size() == 2);
+  CHECK(points[0] == Point_3(1, -2, 3.25));
+  CHECK(points[1] == Point_3(-4, 5, 0.125));
+  for(const bool little : {true, false})
+  {
+    std::string binary = ply_header(little ? "binary_little_endian" : "binary_big_endian", elements);
+    put_binary<std::uint8_t>(binary, 3, little);
+    for(std::int32_t id : {7, 8, 9})
+      put_binary(binary, id, little);
+    put_binary<std::uint8_t>(binary, 1, little);
+    for(const Point_3& p : {Point_3(1, -2, 3.25), Point_3(-4, 5, 0.125)})
+    {
+      put_binary(binary, 0.5, little);
+      put_binary(binary, std::int32_t(p.x()), little);
+      put_binary(binary, float(p.z()), little);
+      put_binary(binary, std::int16_t(p.y()), little);
+    }
+    std::vector<Point_3> binary_points;
+    REQUIRE(reads_cloud(binary, "PLY", binary_points, why)); // the format in any letter case
+    CHECK(binary_points == points);                           // faces after the vertices are not needed
+  }
+}
+
+TEST_CASE("read_point_cloud rejects malformed PLY files with a reason", "[io]")
+{
+  const std::string xyz = "element vertex 1\nproperty double x\nproperty double y\nproperty double z\n";
+  CHECK(mentions(rejection("PLY\n", "ply"), "not a PLY file"));
+  CHECK(mentions(rejection("ply\nformat ascii 1.0\n" + xyz, "ply"), "no end_header"));
+  CHECK(mentions(rejection("ply\n" + xyz + "end_header\n0 0 0\n", "ply"), "no format line"));
+  CHECK(mentions(rejection(ply_header("utf8", xyz), "ply"), "unknown format 'utf8'"));
+  CHECK(mentions(rejection(ply_header("ascii", "element vertex 1\nproperty int64 x\n"), "ply"), "PLY type"));
+  CHECK(mentions(rejection(ply_header("ascii", "property float x\n" + xyz), "ply"), "before any element"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz + "property list float int i\n"), "ply"), "integer type"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz + "bogus line\n"), "ply"), "unknown keyword 'bogus'"));
+  CHECK(mentions(rejection(ply_header("ascii", "element vertex -1\n"), "ply"), "element NAME COUNT"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz + "property float x\n") + "0 0 0 0\n", "ply"), "single number"));
+  CHECK(mentions(rejection(ply_header("ascii", "element vertex 1\nproperty list uchar float x\nproperty float y\n"
+                                               "property float z\n"), "ply"), "single number"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz) + "0 0\n", "ply"), "item 0 of 1 is truncated"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz) + "0 zero 0\n", "ply"), "truncated or malformed"));
+  CHECK(mentions(rejection(ply_header("ascii", xyz) + "0 nan 0\n", "ply"), "vertex 0: non-finite"));
+  std::string binary = ply_header("binary_little_endian", xyz);
+  put_binary(binary, 1.0, true);
+  put_binary(binary, std::numeric_limits<double>::infinity(), true);
+  put_binary(binary, 1.0, true);
+  CHECK(mentions(rejection(binary, "ply"), "vertex 0: non-finite"));
+  CHECK(mentions(rejection(binary.substr(0, binary.size() - 1), "ply"), "truncated"));
+  // Counts far beyond the data fail at the end of the data, without reserving room for them.
+  CHECK(mentions(rejection(ply_header("ascii", "element vertex 4000000000000000\nproperty float x\n"
+                                               "property float y\nproperty float z\n") + "0 0 0\n", "ply"),
+                 "item 1 of 4000000000000000"));
+  std::string huge_list = ply_header("binary_little_endian", "element a 1\nproperty list uint double l\n" + xyz);
+  put_binary<std::uint32_t>(huge_list, 4000000000u, true);
+  CHECK(mentions(rejection(huge_list, "ply"), "element 'a': item 0 of 1 is truncated"));
+  // Elements without properties take no room, however many items they announce.
+  std::vector<Point_3> points;
+  std::string why;
+  CHECK(reads_cloud(ply_header("ascii", "element nothing 4000000000000000\n" + xyz) + "1 2 3\n", "ply", points, why));
+}
+
+TEST_CASE("read_point_cloud reads XYZ files: comments, a count line, extra columns", "[io]")
+{
+  std::vector<Point_3> points;
+  std::string why;
+  REQUIRE(reads_cloud("# header comment\n3\n0 0 0\n\n1 2 3 0 0 1 # with a normal\n+1e-320 -1.5e300 .25\n", "xyz",
+                      points, why));
+  REQUIRE(points.size() == 3);
+  CHECK(points[1] == Point_3(1, 2, 3));
+  CHECK(points[2] == Point_3(1e-320, -1.5e300, 0.25));
+  CHECK(reads_cloud("", "xyz", points, why)); // empty is a valid, empty cloud; points are appended
+  CHECK(points.size() == 3);
+}
+
+TEST_CASE("read_point_cloud rejects malformed XYZ files with a reason", "[io]")
+{
+  CHECK(mentions(rejection("0 0 0\n1 1\n", "xyz"), "line 2: expected three coordinates, found 2"));
+  CHECK(mentions(rejection("0 0 0\n1 1 one\n", "xyz"), "line 2: 'one' is not a number"));
+  CHECK(mentions(rejection("0 0 0\n1 +-1 1\n", "xyz"), "'+-1' is not a number"));
+  CHECK(mentions(rejection("0 0 nan\n", "xyz"), "line 1: non-finite coordinate"));
+  CHECK(mentions(rejection("0 -inf 0\n", "xyz"), "line 1: non-finite coordinate"));
+  CHECK(mentions(rejection("0 1e400 0\n", "xyz"), "line 1: non-finite coordinate"));
+  CHECK(mentions(rejection("3\n0 0 0\n1 1 1\n", "xyz"), "announces 3 points, the file holds 2"));
+  CHECK(mentions(rejection("0 0 0\n3\n", "xyz"), "line 2: expected three coordinates"));
+}
+
+TEST_CASE("read_point_cloud reads OFF vertices and rejects malformed OFF files", "[io]")
+{
+  std::vector<Point_3> points;
+  std::string why;
+  REQUIRE(reads_cloud("OFF\n# comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0.5\n3 0 1 2\n", "off", points, why));
+  REQUIRE(points.size() == 3);
+  CHECK(points[2] == Point_3(0, 1, 0.5));
+  std::vector<Point_3> normals_and_colours;
+  REQUIRE(reads_cloud("CNOFF 2 0 0\n0 0 0 0 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n", "off", normals_and_colours, why));
+  CHECK(normals_and_colours.size() == 2);
+  CHECK(mentions(rejection("", "off"), "empty file"));
+  CHECK(mentions(rejection("PLY\n", "off"), "not an OFF file"));
+  CHECK(mentions(rejection("4OFF\n1 0 0\n0 0 0 1\n", "off"), "not supported"));
+  CHECK(mentions(rejection("nOFF\n4 1 0 0\n0 0 0 1\n", "off"), "not supported"));
+  CHECK(mentions(rejection("OFF BINARY\n", "off"), "binary OFF"));
+  CHECK(mentions(rejection("OFF\n", "off"), "no vertex and face counts"));
+  CHECK(mentions(rejection("OFF\n2\n", "off"), "expected the counts"));
+  CHECK(mentions(rejection("OFF\n2 0 x\n", "off"), "'x' is not a number"));
+  CHECK(mentions(rejection("OFF\n2 0 0\n0 0 0\n", "off"), "ends after 1 of 2 vertices"));
+  CHECK(mentions(rejection("OFF\n1 0 0\n0 0\n", "off"), "line 3: expected three vertex coordinates"));
+  CHECK(mentions(rejection("OFF\n1 0 0\n0 inf 0\n", "off"), "line 3: non-finite coordinate"));
+  CHECK(mentions(rejection("OFF\n4000000000000000 0 0\n0 0 0\n", "off"), "ends after 1 of 4000000000000000"));
+}
+
+TEST_CASE("read_point_cloud picks the format from the file extension and leaves the points on failure", "[io]")
+{
+  const std::string filename = "sfe_test_io_cloud.XYZ";
+  {
+    std::ofstream os(filename);
+    os << "0 0 0\n1 2 3\n";
+  }
+  std::vector<Point_3> points{Point_3(9, 9, 9)};
+  std::string why;
+  REQUIRE(CGAL::IO::read_point_cloud(filename, points, &why));
+  REQUIRE(points.size() == 3);
+  CHECK(points[2] == Point_3(1, 2, 3));
+  std::remove(filename.c_str());
+  CHECK_FALSE(CGAL::IO::read_point_cloud(filename, points, &why));
+  CHECK(why == "cannot open the file");
+  CHECK_FALSE(CGAL::IO::read_point_cloud("cloud.las", points, &why));
+  CHECK(why == "unknown file extension 'las' (expected .xyz, .ply or .off)");
+  CHECK_FALSE(CGAL::IO::read_point_cloud("a.dir/cloud", points));
+  CHECK(points.size() == 3);
+  CHECK(mentions(rejection("0 0 0\n", "las"), "unknown point cloud format 'las'"));
+  CHECK(mentions(rejection("0 0 0\n1 1\n", "xyz"), "line 2"));
+  std::vector<Point_3> kept{Point_3(1, 1, 1)};
+  CHECK_FALSE(reads_cloud("0 0 0\n1 1\n", "xyz", kept, why));
+  CHECK(kept.size() == 1);                                  // a failed read leaves the points as they were
 }

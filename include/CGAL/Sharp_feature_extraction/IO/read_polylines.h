@@ -4,6 +4,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_IO_READ_POLYLINES_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_IO_READ_POLYLINES_H
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <istream>
@@ -34,8 +35,11 @@ bool read_polylines(std::istream& is, std::vector<std::vector<Point_3>>& polylin
         continue;
       return false;
     }
+    // A point takes at least 6 characters ("0 0 0 "): a larger count is malformed, and must
+    // not make us reserve room for it.
+    const std::size_t shortest_point_text = 6;
     std::vector<Point_3> polyline;
-    polyline.reserve(n);
+    polyline.reserve(std::min(n, line.size() / shortest_point_text + 1));
     for(std::size_t i = 0; i < n; ++i)
     {
       double x, y, z;
