@@ -54,8 +54,9 @@ configure_and_build "${build_options[@]}" "$@"
 # The meshing tests must be there whenever meshing is on: a cached option once dropped them
 # silently (scripts/demo.sh, then this script, in one checkout).
 meshing_on="$(sed -n 's/^SFE_BUILD_MESHING:BOOL=//p' "$SFE_BUILD_DIR/CMakeCache.txt")"
-if [ "$meshing_on" = ON ] \
-   && ! ctest --test-dir "$SFE_BUILD_DIR" --show-only=json-v1 | grep -q test_meshing_with_features; then
+# The list is captured first: with pipefail, grep -q closing the pipe early would fail ctest.
+registered_tests="$(ctest --test-dir "$SFE_BUILD_DIR" --show-only=json-v1)"
+if [ "$meshing_on" = ON ] && ! grep -q test_meshing_with_features <<< "$registered_tests"; then
   sfe_die "SFE_BUILD_MESHING is ON in $SFE_BUILD_DIR but no meshing test is registered"
 fi
 
