@@ -7,8 +7,9 @@
 #                                       (optimised, without NDEBUG), in build-assertions/; the
 #                                       example programs and the Mesh_3 tests are left out
 #   bash scripts/test.sh --sanitize     the suite under AddressSanitizer and UndefinedBehaviorSanitizer
-#                                       (the Mesh_3 tests and the examples left out: ~3.6 GB
-#                                       and minutes each), in build-sanitize/
+#                                       with CGAL's assertions and preconditions on as well (what
+#                                       CI runs after the Release suite), in build-sanitize/; the
+#                                       examples and the Mesh_3 tests are left out
 #
 # Every option of the build is set explicitly at each run, so that what ran before in the same
 # build directory (scripts/demo.sh configures build/ without tests and meshing) changes nothing.
@@ -39,10 +40,21 @@ case "$mode" in
     ;;
   sanitize)
     SFE_BUILD_DIR="$SFE_ROOT/build-sanitize"
+    # One build for both checks CI needs beyond Release: no NDEBUG, so CGAL_assertion and
+    # CGAL_precondition are checked under the sanitizers, and a separate assertions build
+    # (7 more translation units to compile) is not needed.
+    # Compiling weighs more than running here (test_bad_input.cpp: 196 s of CPU to compile at
+    # -O1 -g1, 38 s to run its tests), hence -O1, cheaper to compile than -O2, and -g1: line
+    # tables only, the reports keep file and line.
+    # The Mesh_3 tests are left out (one translation unit of ~3.6 GB and minutes), and so
+    # are the examples (no test runs them; the Release run builds them).
     sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
     build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DCMAKE_BUILD_TYPE=Sanitize
-                    "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -g $sanitizers"
+                    "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -g1 $sanitizers"
                     "-DCMAKE_EXE_LINKER_FLAGS_SANITIZE=$sanitizers")
+    # Any finding ends the test process with a non-zero status, so ctest counts it as failed:
+    # -fno-sanitize-recover and halt_on_error for UBSan, abort_on_error for ASan, and
+    # LeakSanitizer's exit status for a leak.
     export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
     ;;
@@ -50,6 +62,12 @@ esac
 
 install_missing_packages "${SFE_PACKAGES[@]}"
 configure_and_build "${build_options[@]}" "$@"
+
+# The assertions are what these builds check: an NDEBUG or CGAL_NDEBUG brought in from outside
+# (CXXFLAGS, an extra argument) must not switch them off silently.
+if [ "$mode" != release ] && grep -qsE -- "-D(CGAL_)?NDEBUG" "$SFE_BUILD_DIR"/test/Sharp_feature_extraction/CMakeFiles/*/flags.make; then
+  sfe_die "NDEBUG or CGAL_NDEBUG is defined in $SFE_BUILD_DIR: CGAL's assertions would not be checked"
+fi
 
 # The meshing tests must be there whenever meshing is on: a cached option once dropped them
 # silently (scripts/demo.sh, then this script, in one checkout).
