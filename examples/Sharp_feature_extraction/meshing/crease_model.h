@@ -98,14 +98,16 @@ public:
       return near_end && CGAL::to_double((x - end) * out) > 0;
     }
 
-    /// 1 up to `width` before the plane through the end (or away from any end), 0 beyond it,
-    /// smooth in between.
+    /// 1 up to the plane through the end (or away from any end), 0 from `width` beyond it,
+    /// smooth in between. The end itself keeps the full model: it is a protected vertex, and
+    /// the implicit surface must pass through it (a protected vertex off the surface by more
+    /// than the facet distance makes Mesh_3 refine onto its protecting ball without end).
     double before_end(const Point_3& x, double width) const
     {
       if(!near_end)
         return 1;
-      const double r = -CGAL::to_double((x - end) * out) / width;
-      return r <= 0 ? 0. : (r >= 1 ? 1. : r * r * (3 - 2 * r));
+      const double r = 1 - CGAL::to_double((x - end) * out) / width;
+      return r >= 1 ? 1. : (r <= 0 ? 0. : r * r * (3 - 2 * r));
     }
   };
 
