@@ -7,11 +7,14 @@
 #
 #   scripts/bench_meshing.sh [--build DIR] [--parts "fandisk anchor joint part"]
 #                            [--noises "0 0.005"] [--seeds "1 2 3 4 5"] [--points 100000]
-#                            [--true-curves] [--work DIR] [--time-limit SEC]
+#                            [--true-curves] [--work DIR] [--time-limit SEC] [--resume]
 #
 # --seeds: one independently drawn cloud per seed and case (the sampler's seed), so that a
 # failure on one draw of the same part and noise cannot hide behind a lucky one. The table has
 # one row per run and a summary per part, noise and run over the seeds (valid count, medians).
+#
+# --resume keeps the clouds and runs already in the work directory (an interrupted benchmark, or
+# more parts added to a finished one) and runs only the missing ones; the report covers all.
 #
 # --true-curves adds a third run per case, protecting the true creases instead of the
 # extracted ones (the best the meshing can do with perfect curves). When the library's
@@ -28,6 +31,7 @@ points=100000
 true_curves=0
 time_limit=1800
 work=""
+resume=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
@@ -38,7 +42,8 @@ while [ $# -gt 0 ]; do
     --true-curves) true_curves=1; shift ;;
     --work) work="$2"; shift 2 ;;
     --time-limit) time_limit="$2"; shift 2 ;;
-    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+    --resume) resume=1; shift ;;
+    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
     *) echo "bench_meshing.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -88,17 +93,22 @@ run_case() { # part noise seed variant -> stats + measures in $work/<part>_<nois
     features) [ "$extraction" = 1 ] || args+=(--curves "$work/${part}_true_curves.txt") ;;
     true) args+=(--curves "$work/${part}_true_curves.txt") ;;
   esac
+  # .status is written last: a run interrupted before it is run again
+  [ "$resume" = 1 ] && [ -f "$base.status" ] && return 0
+  rm -f "$base.off" "$base.stats" "$base.measure" "$base.status"
   echo "  $part noise $noise seed $seed: $variant" >&2
   local status=0
   "$mesher" "${args[@]}" "$cloud" "$base" > "$base.log" 2>&1 || status=$?
   if [ ! -f "$base.off" ] || [ "$status" = 1 ]; then
     echo "    failed (status $status): $(tail -n 1 "$base.log")" >&2
+    echo "$status" > "$base.status"
     return 1
   fi
   "$measure" --truth "$data/$part.off" --mesh "$base.off" > "$base.measure"
   if [ "$noise" = 0 ] && [ "$seed" = "$first_seed" ]; then
     "$measure" --truth "$data/$part.off" --mesh "$base.off" --render "$results/${part}_${variant}" > /dev/null
   fi
+  echo "$status" > "$base.status"
 }
 
 row() { # part noise seed variant
@@ -151,6 +161,7 @@ for part in $parts; do
   "$measure" --truth "$data/$part.off" --render "$results/${part}_truth"
   for noise in $noises; do
     for seed in $seeds; do
+      [ "$resume" = 1 ] && [ -f "$work/${part}_${noise}_s${seed}.xyz" ] ||
       "$measure" --truth "$data/$part.off" --sample-to "$work/${part}_${noise}_s${seed}.xyz" --points "$points" \
                  --noise "$noise" --seed "$seed"
       for variant in $variants; do

@@ -97,13 +97,26 @@ public:
     {
       return near_end && CGAL::to_double((x - end) * out) > 0;
     }
+
+    /// 1 up to the plane through the end (or away from any end), 0 from `width` beyond it,
+    /// smooth in between. The end itself keeps the full model: it is a protected vertex, and
+    /// the implicit surface must pass through it (a protected vertex off the surface by more
+    /// than the facet distance makes Mesh_3 refine onto its protecting ball without end).
+    double before_end(const Point_3& x, double width) const
+    {
+      if(!near_end)
+        return 1;
+      const double r = 1 - CGAL::to_double((x - end) * out) / width;
+      return r >= 1 ? 1. : (r <= 0 ? 0. : r * r * (3 - 2 * r));
+    }
   };
 
   /// fits the patches of every curve that has normals to `points` (curves without normals
   /// are ignored). Normal orientation is the curves' own until `orient()` is called.
   Crease_model(const std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
                const std::vector<Point_3>& points, const Crease_model_options& options)
-    : m_options(options), m_samples_grid(options.blend_outer), m_number_of_curves(curves.size()),
+    : m_options(options), m_kernel_radius(options.blend_outer + options.sample_step),
+      m_samples_grid(m_kernel_radius), m_number_of_curves(curves.size()),
       m_convex(curves.size(), true)
   {
     resample(curves);
@@ -201,25 +214,35 @@ public:
   }
 
   /// The crease model's signed distance at `x` (negative inside) and its weight in the blend
-  /// with the smooth function: 1 within `blend_inner` of a curve, 0 beyond `blend_outer`.
+  /// with the smooth function: 1 within `blend_inner` of a curve, 0 beyond `blend_outer`, and
+  /// fading to 0 past an open end. Both are continuous in `x`: the signed distance is the
+  /// average of the samples' two-patch models, each weighted by a kernel that vanishes a little
+  /// beyond `blend_outer`. (The model of the nearest sample alone jumps where the nearest sample
+  /// changes, by the difference between two noisy fits; where such jumps of either sign meet,
+  /// the zero set pinches into a point that is not a manifold, and Mesh_3's manifold
+  /// refinement converges onto it with ever smaller facets.)
   double value(const Point_3& x, double& weight) const
   {
-    double d2 = 0;
-    const std::size_t i = m_samples_grid.nearest_within(x, m_options.blend_outer, &d2);
-    if(i == Spatial_grid<Point_3>::none) {
-      weight = 0;
+    weight = 0;
+    const double radius2 = CGAL::square(m_kernel_radius);
+    double nearest2 = radius2, mass = 0, kept_mass = 0, sum = 0;
+    m_samples_grid.for_each_within(x, m_kernel_radius, [&](std::size_t i, double d2) {
+      const Sample& s = m_samples[i];
+      nearest2 = (std::min)(nearest2, d2);
+      const double k = CGAL::square(1 - d2 / radius2);
+      mass += k;
+      const double kept = k * s.before_end(x, m_options.sample_step);
+      if(kept <= 0)
+        return;
+      const double g0 = signed_distance(s, 0, x), g1 = signed_distance(s, 1, x);
+      sum += kept * (m_convex[s.curve] ? (std::max)(g0, g1) : (std::min)(g0, g1));
+      kept_mass += kept;
+    });
+    if(kept_mass <= 0)
       return 0;
-    }
-    const Sample& s = m_samples[i];
-    if(s.is_beyond_end(x)) {
-      weight = 0;
-      return 0;
-    }
-    const double d = std::sqrt(d2);
-    const double r = (d - m_options.blend_inner) / (m_options.blend_outer - m_options.blend_inner);
-    weight = r <= 0 ? 1. : (r >= 1 ? 0. : 1. - r * r * (3 - 2 * r));
-    const double g0 = signed_distance(s, 0, x), g1 = signed_distance(s, 1, x);
-    return m_convex[s.curve] ? (std::max)(g0, g1) : (std::min)(g0, g1);
+    const double r = (std::sqrt(nearest2) - m_options.blend_inner) / (m_options.blend_outer - m_options.blend_inner);
+    weight = (r <= 0 ? 1. : (r >= 1 ? 0. : 1. - r * r * (3 - 2 * r))) * kept_mass / mass;
+    return sum / kept_mass;
   }
 
   /// signed distance (approximately: the height above the patch) from `x` to side `k` of `s`.
@@ -423,6 +446,10 @@ private:
   static constexpr std::size_t minimum_support = 10;
 
   Crease_model_options m_options;
+  /// Samples within this distance of a point take part in its crease value: `blend_outer`
+  /// plus one sample step, so that wherever the weight is positive (the nearest sample within
+  /// `blend_outer`) at least one sample has a positive kernel.
+  double m_kernel_radius;
   std::vector<Sample> m_samples;
   Spatial_grid<Point_3> m_samples_grid;
   std::size_t m_number_of_curves;

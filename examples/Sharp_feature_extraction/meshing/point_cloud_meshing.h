@@ -29,6 +29,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -284,16 +285,37 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   function.creases = options.sharpen_creases ? &creases : nullptr;
   function.base_scale = 1. / meshing_internal::gradient_norm(poisson, pwn, s);
 
-  // Mesh_3's domain: a sphere around the cloud (its bounding cube, in fact)
+  // Mesh_3's domain: a sphere around the cloud (its bounding cube, in fact). Mesh_3 finds its
+  // first surface points along segments from the sphere's centre to its boundary: from a
+  // centre outside the solid (a non-convex part, or a noisy function near the box centre) no
+  // segment changes sign and no surface is found. So the centre is a point inside, the one
+  // nearest to the box centre among the points `inside_depth` below the samples, and the
+  // sphere grows to hold the same box.
   CGAL::Bbox_3 box;
   for(const Point_3& p : points)
     box += p.bbox();
-  const Point_3 center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
-                       (box.zmin() + box.zmax()) / 2);
+  const Point_3 box_center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2,
+                           (box.zmin() + box.zmax()) / 2);
+  Point_3 center = box_center;
+  if(!(function(center) < 0)) {
+    // two spacings below an oriented sample: inside, clear of the noise of the surface
+    const double inside_depth = 2 * s;
+    double nearest = std::numeric_limits<double>::infinity();
+    const std::size_t step = (std::max)(std::size_t(1), pwn.size() / 2000);
+    for(std::size_t i = 0; i < pwn.size(); i += step) {
+      const Point_3 q = pwn[i].first - inside_depth * pwn[i].second;
+      const double d2 = CGAL::to_double(CGAL::squared_distance(q, box_center));
+      if(d2 < nearest && function(q) < 0) {
+        nearest = d2;
+        center = q;
+      }
+    }
+  }
   const double half_diagonal = 0.5 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
                                                CGAL::square(box.ymax() - box.ymin()) +
                                                CGAL::square(box.zmax() - box.zmin()));
-  const double radius = 1.1 * half_diagonal + 5 * s;
+  const double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, box_center))) +
+                        1.1 * half_diagonal + 5 * s;
 
   result.seconds_poisson = seconds_since(start);
   report("poisson", 1, result.seconds_poisson);
