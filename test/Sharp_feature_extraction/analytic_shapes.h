@@ -97,15 +97,17 @@ private:
 // True creases
 
 /// A true sharp crease: a segment or a circle, with the unit normals of the two smooth surfaces
-/// that meet along it (constant for a segment; for a circle, one constant and one radial).
+/// that meet along it (constant for a segment; for a circle, one constant and one that points
+/// away from `normal_center`: radial for a cylinder, from the sphere's centre for a sphere).
 struct Crease
 {
   bool circle = false;
   // Segment.
   Vec a, b;
   Vec normal_a, normal_b;
-  // Circle: centre, unit axis, radius. normal_a is the constant (cap) normal; the other is radial.
-  Vec center, axis;
+  // Circle: centre, unit axis, radius. normal_a is the constant (cap) normal; the other is
+  // the direction from `normal_center` to the crease point.
+  Vec center, axis, normal_center;
   double radius = 0;
 
   static Crease segment(const Vec& a, const Vec& b, const Vec& n1, const Vec& n2)
@@ -116,9 +118,15 @@ struct Crease
   }
   static Crease ring(const Vec& center, const Vec& axis, double radius, const Vec& cap_normal)
   {
+    return ring(center, axis, radius, cap_normal, center);
+  }
+  static Crease ring(const Vec& center, const Vec& axis, double radius, const Vec& cap_normal,
+                     const Vec& normal_center)
+  {
     Crease c;
     c.circle = true; c.center = center; c.axis = normalized(axis); c.radius = radius;
     c.normal_a = normalized(cap_normal);
+    c.normal_center = normal_center;
     return c;
   }
 
@@ -156,7 +164,7 @@ struct Crease
   {
     if(!circle)
       return {{normal_a, normal_b}};
-    return {{normal_a, normalized(closest_point(p) - center)}};
+    return {{normal_a, normalized(closest_point(p) - normal_center)}};
   }
 
   static Vec any_orthogonal(const Vec& n)
@@ -180,8 +188,8 @@ struct Shape
   {
     double area;
     int kind;          // 0: cylinder side, 1: disk, 2: sphere
-    Vec center, axis;  // axis: cylinder axis / disk normal
-    double radius, height;
+    Vec center, axis;  // axis: cylinder axis / disk normal / sphere pole
+    double radius, height; // sphere: the part up to `height` along the axis from the centre
   };
   std::vector<Curved_piece> curved;
 
@@ -288,9 +296,27 @@ inline Shape sphere()
   Shape s;
   s.name = "sphere";
   const double r = 0.5;
-  s.curved.push_back({4 * pi * r * r, 2, Vec(0, 0, 0), Vec(0, 0, 1), r, 0});
+  s.curved.push_back({4 * pi * r * r, 2, Vec(0, 0, 0), Vec(0, 0, 1), r, r});
   s.bbox_min = Vec(-r, -r, -r);
   s.bbox_max = Vec(r, r, r);
+  return s;
+}
+
+/// A sphere of radius 0.5 with its top cut off by a plane, so that the normals of the sphere and
+/// of the flat cap are `crease_degrees` apart along the circle where they meet: a shallow crease
+/// between a curved and a flat surface. One closed crease, no corner.
+inline Shape truncated_sphere(double crease_degrees)
+{
+  Shape s;
+  s.name = "sphere cut at " + std::to_string(int(crease_degrees)) + " degrees";
+  const double r = 0.5, a = crease_degrees * pi / 180;
+  const double h = r * std::cos(a), rim = r * std::sin(a);
+  const Vec up(0, 0, 1);
+  s.curved.push_back({2 * pi * r * (r + h), 2, Vec(0, 0, 0), up, r, h});
+  s.curved.push_back({pi * rim * rim, 1, Vec(0, 0, h), up, rim, 0});
+  s.creases.push_back(Crease::ring(Vec(0, 0, h), up, rim, up, Vec(0, 0, 0)));
+  s.bbox_min = Vec(-r, -r, -r);
+  s.bbox_max = Vec(r, r, h);
   return s;
 }
 
@@ -367,7 +393,8 @@ inline std::vector<Vec> sample(const Shape& shape, std::size_t n, double noise, 
         p = c.center + (u * std::cos(angle) + v * std::sin(angle)) * (c.radius * std::sqrt(random.uniform()));
       else
       {
-        const double z = random.uniform(-1, 1), rho = std::sqrt((std::max)(0., 1 - z * z));
+        // Uniform in z on a sphere is uniform in area (Archimedes).
+        const double z = random.uniform(-1, c.height / c.radius), rho = std::sqrt((std::max)(0., 1 - z * z));
         p = c.center + (c.axis * z + (u * std::cos(angle) + v * std::sin(angle)) * rho) * c.radius;
       }
     }

@@ -24,8 +24,10 @@ namespace CGAL {
 /// within the completion distance are joined the same way. Corners with fewer than two curves are
 /// removed; a corner between two curves that continue each other (turning by less than 60
 /// degrees) is merged through. A curve turning by more than 60 degrees at a vertex
-/// is split there (Mesh_3 would round such a turn off). Finally `number_of_relaxation_steps`
-/// passes of Laplacian smoothing with inverse-distance weights move interior vertices, ends fixed.
+/// is split there (Mesh_3 would round such a turn off). Then `number_of_relaxation_steps` passes
+/// of non-shrinking Laplacian smoothing (Taubin's lambda|mu, inverse-distance weights) move
+/// interior vertices, ends fixed; finally each corner moves to where the lines fitted to its
+/// curves near it meet, when that is within a growth radius.
 ///
 /// Guarantees: curves that meet at a corner share the exact corner point; closed loops repeat
 /// their first point exactly; normals are consistent in order and orientation along each curve.
@@ -34,7 +36,7 @@ namespace CGAL {
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{maximum_angle} half-angle, in degrees, of the search cone; default: 30. \cgalParamNEnd
-///   \cgalParamNBegin{number_of_relaxation_steps} Laplacian passes; default: 2. \cgalParamNEnd
+///   \cgalParamNBegin{number_of_relaxation_steps} smoothing passes; default: 2. \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance} largest gap
 ///     bridged; default: `network.scales.completion_distance`. \cgalParamNEnd
 /// \cgalNamedParamsEnd
