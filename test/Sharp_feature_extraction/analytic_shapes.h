@@ -405,6 +405,19 @@ inline std::vector<Vec> sample(const Shape& shape, std::size_t n, double noise, 
   return points;
 }
 
+/// `points` followed by `fraction * points.size()` outliers uniform in the bounding box of
+/// `shape` (as the benchmark's sampler adds them). Deterministic for a given seed.
+inline std::vector<Vec> with_outliers(std::vector<Vec> points, const Shape& shape, double fraction,
+                                      std::uint64_t seed = 20260102)
+{
+  Random random(seed);
+  const std::size_t count = std::size_t(fraction * double(points.size()) + 0.5);
+  for(std::size_t i = 0; i < count; ++i)
+    points.emplace_back(random.uniform(shape.bbox_min.x, shape.bbox_max.x), random.uniform(shape.bbox_min.y, shape.bbox_max.y),
+                        random.uniform(shape.bbox_min.z, shape.bbox_max.z));
+  return points;
+}
+
 template <typename Point_3>
 std::vector<Point_3> to_points(const std::vector<Vec>& v)
 {

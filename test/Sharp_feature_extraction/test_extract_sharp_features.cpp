@@ -22,6 +22,8 @@ using namespace sfe_test;
 /// Noise radii of the noisy runs, relative to dB (uniform in a ball).
 constexpr double noisy = 0.005;
 constexpr double very_noisy = 0.01;
+/// Outliers added to the cloud, as a fraction of its points (the benchmark's heavier setting).
+constexpr double outliers = 0.05;
 
 /// Number of sample points of each shape (about the same density on every shape).
 constexpr std::size_t number_of_points = 30000;
@@ -65,10 +67,12 @@ struct Extraction
   double diagonal;
 };
 
-Extraction extract(const Shape& shape, double noise, double vertex_tolerance, std::size_t n = number_of_points)
+Extraction extract(const Shape& shape, double noise, double vertex_tolerance, std::size_t n = number_of_points,
+                   double outlier_fraction = 0)
 {
   Extraction x{shape, noise, {}, {}, shape.bbox_diagonal()};
-  const std::vector<K::Point_3> points = to_points<K::Point_3>(sample(shape, n, noise));
+  const std::vector<K::Point_3> points =
+    to_points<K::Point_3>(with_outliers(sample(shape, n, noise), shape, outlier_fraction));
   REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(points, x.result));
   x.errors = measure(shape, x.result.network, vertex_tolerance * x.diagonal, coverage_step * x.diagonal);
   std::cout << x.errors.summary(shape.name + " at noise " + std::to_string(noise * 100) + "% dB", x.diagonal)
@@ -80,9 +84,10 @@ Extraction extract(const Shape& shape, double noise, double vertex_tolerance, st
 /// Extracts the features of `shape` at `noise` and checks them against `expected`, with the
 /// checks every run shares: finite results, the Mesh_3 contract, unit normals that do not flip
 /// between consecutive vertices.
-Extraction check(const Shape& shape, double noise, const Expected& expected, std::size_t n = number_of_points)
+Extraction check(const Shape& shape, double noise, const Expected& expected, std::size_t n = number_of_points,
+                 double outlier_fraction = 0)
 {
-  const Extraction x = extract(shape, noise, expected.max_vertex_distance, n);
+  const Extraction x = extract(shape, noise, expected.max_vertex_distance, n, outlier_fraction);
   const Network_errors& e = x.errors;
   const double dB = x.diagonal;
   INFO(e.summary(x.shape.name + " at noise " + std::to_string(noise * 100) + "% dB", dB));
@@ -178,6 +183,19 @@ TEST_CASE("an exact sphere cut by a plane at 30, 35, 40 and 50 degrees yields on
   }
 }
 
+TEST_CASE("exact shapes with 5% outliers uniform in their bounding box: the 30-degree crease and the stepped "
+          "box's 18 creases and 12 corners are found",
+          "[shapes][outliers]")
+{
+  // The candidate threshold is the mean residual over the fits that a surface can explain: with
+  // the outliers' own residuals in the mean, the 30-degree crease fell below it (no curve).
+  check(two_planes(30), 0, exact(1, 0, 0), number_of_points * 2 / 3, outliers);
+  // Exact geometry, but the normals of a few vertices next to outliers tilt by up to 8 degrees.
+  Expected step = exact(18, 0, 12);
+  step.max_normal_error = 10;
+  check_corner_valences(check(stepped_box(), 0, step, number_of_points, outliers), 3);
+}
+
 TEST_CASE("an exact sphere yields no curve and no corner", "[shapes][sphere]")
 {
   check_sphere(0);
@@ -196,43 +214,45 @@ TEST_CASE("a sphere with 0.5% noise yields no curve and no corner", "[shapes][sp
 TEST_CASE("a unit cube yields 12 polylines and 8 corners at 0.5% noise, 14 and 9 at 1%", "[shapes][cube][noise]")
 {
   check(unit_cube(), noisy, Expected{12, 12, 0, 0, 8, 8, 12, 0, 0.012, 0.0017, 0.97, 0.005, 35});
-  check(unit_cube(), very_noisy, Expected{14, 14, 0, 0, 9, 9, 11, 3, 0.009, 0.003, 0.9, 0.1, 40});
+  check(unit_cube(), very_noisy, Expected{14, 14, 0, 0, 9, 9, 11, 3, 0.02, 0.0033, 0.9, 0.15, 50});
 }
 
-TEST_CASE("a chamfered box yields 13 of its 15 creases at 0.5% noise, 15 polylines at 1%", "[shapes][chamfer][noise]")
+TEST_CASE("a chamfered box yields 14 polylines (12 of its 15 creases as one curve) at 0.5% noise, 9 at 1%",
+          "[shapes][chamfer][noise]")
 {
-  // Two corners of the chamfer are missed: the nearest found corner is 41% dB away.
-  check(chamfered_box(), noisy, Expected{13, 13, 0, 0, 8, 8, 13, 0, 0.007, 0.0016, 0.9, 0.45, 90});
-  check(chamfered_box(), very_noisy, Expected{15, 15, 0, 0, 9, 9, 12, 3, 0.01, 0.003, 0.85, 0.45, 90});
+  // Corners of the chamfer are missed: the nearest found corner is 37% (0.5%) and 42% (1%)
+  // dB away. At 1% noise the chamfer's six short creases are lost.
+  check(chamfered_box(), noisy, Expected{14, 14, 0, 0, 9, 9, 12, 2, 0.021, 0.0018, 0.9, 0.45, 90});
+  check(chamfered_box(), very_noisy, Expected{9, 9, 0, 0, 6, 6, 9, 0, 0.009, 0.003, 0.85, 0.45, 90});
 }
 
-TEST_CASE("a stepped box yields 20 polylines and 13 corners at 0.5% noise, 19 and 12 at 1%", "[shapes][step][noise]")
+TEST_CASE("a stepped box yields its 18 creases and 12 corners at 0.5% noise, 21 polylines and 13 corners at 1%",
+          "[shapes][step][noise]")
 {
-  check(stepped_box(), noisy, Expected{20, 20, 0, 0, 13, 13, 17, 3, 0.007, 0.0017, 0.95, 0.19, 35});
-  check(stepped_box(), very_noisy, Expected{19, 19, 0, 0, 12, 12, 17, 2, 0.035, 0.0035, 0.85, 0.013, 65});
+  check(stepped_box(), noisy, Expected{18, 18, 0, 0, 12, 12, 18, 0, 0.007, 0.0017, 0.95, 0.005, 35});
+  check(stepped_box(), very_noisy, Expected{21, 21, 0, 0, 13, 13, 16, 5, 0.03, 0.0035, 0.85, 0.13, 75});
 }
 
-TEST_CASE("a capped cylinder yields its 2 rims as loops at 0.5% noise (plus a stray piece) and at 1%",
-          "[shapes][cylinder][noise]")
+TEST_CASE("a capped cylinder yields its 2 rims as loops at 0.5% and at 1% noise", "[shapes][cylinder][noise]")
 {
-  check(capped_cylinder(), noisy, Expected{3, 3, 2, 2, 1, 1, 1, 2, 0.011, 0.0018, 0.95, 0, 15});
+  check(capped_cylinder(), noisy, Expected{2, 2, 2, 2, 0, 0, 2, 0, 0.011, 0.0018, 0.95, 0, 28});
   check(capped_cylinder(), very_noisy, Expected{2, 2, 2, 2, 0, 0, 2, 0, 0.008, 0.003, 0.9, 0, 22});
 }
 
-TEST_CASE("two planes with 0.5% noise: one polyline at 90 degrees, none at 30, two pieces of the 30-degree wedge",
+TEST_CASE("two planes with 0.5% noise: one polyline at 90 degrees, a short piece at 30, none on the 30-degree wedge",
           "[shapes][planes][noise]")
 {
   const std::size_t n = number_of_points * 2 / 3;
   check(two_planes(90), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.0045, 0.002, 0.97, 0, 15}, n);
-  check(two_planes(30), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.005, 0.002, 0, 0, 90}, n);
-  check(two_planes(150), noisy, Expected{2, 2, 0, 0, 0, 0, 0, 2, 0.008, 0.003, 0.3, 0, 6}, n);
+  check(two_planes(30), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.005, 0.002, 0.15, 0, 12}, n);
+  check(two_planes(150), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.005, 0.002, 0, 0, 90}, n);
 }
 
 TEST_CASE("a sphere cut by a plane, with 0.5% noise: the 50-degree rim is one loop, the shallower ones partly found",
           "[shapes][shallow][noise]")
 {
-  check(truncated_sphere(30), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.006, 0.004, 0.1, 0, 15});
-  check(truncated_sphere(35), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.013, 0.0033, 0.3, 0, 22});
-  check(truncated_sphere(40), noisy, Expected{2, 2, 0, 0, 1, 1, 0, 2, 0.012, 0.003, 0.7, 0, 33});
-  check(truncated_sphere(50), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.0055, 0.002, 0.97, 0, 15});
+  check(truncated_sphere(30), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.006, 0.004, 0, 0, 15});
+  check(truncated_sphere(35), noisy, Expected{3, 3, 0, 0, 2, 2, 0, 3, 0.023, 0.005, 0.5, 0, 28});
+  check(truncated_sphere(40), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.012, 0.003, 0.8, 0, 33});
+  check(truncated_sphere(50), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.007, 0.002, 0.97, 0, 27});
 }

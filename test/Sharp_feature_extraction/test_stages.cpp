@@ -277,20 +277,20 @@ TEST_CASE("stage 2: on a cube with 0.5% noise, half the edge points lie within 0
           "[stages][projection][noise]")
 {
   // A correct projection would be well inside the noise band (a 72-point plane fit averages
-  // the 0.22% dB RMS noise down); today's median is 0.15% dB and the 90th percentile 0.37% dB,
-  // and 4 of the 11 corner points lie over 1% dB from any corner.
+  // the 0.22% dB RMS noise down); today's median is 0.17% dB and the 90th percentile 0.38% dB,
+  // and 3 of the 10 corner points lie over 1% dB from any corner.
   const Stages s = run_stages(unit_cube(), noisy);
   const std::vector<double> d = edge_point_distances(s, s.projected);
   REQUIRE(!d.empty());
-  std::cout << "noisy cube, stage 2: " << d.size() << " edge points, distance median "
-            << percentile(d, 0.5) / s.diagonal << " p90 " << percentile(d, 0.9) / s.diagonal << " dB; "
-            << s.projected.corner_points.size() << " corner points" << std::endl;
-  CHECK(percentile(d, 0.5) <= projection_median_tolerance_noisy * s.diagonal);
-  CHECK(percentile(d, 0.9) <= projection_p90_tolerance_noisy * s.diagonal);
   std::size_t near_corner = 0;
   for(const auto& c : s.projected.corner_points)
     near_corner += distance_to_nearest_true_corner(s.shape, c.point) <= corner_point_tolerance_noisy * s.diagonal ? 1 : 0;
-  CHECK(s.projected.corner_points.size() == 11);
+  std::cout << "noisy cube, stage 2: " << d.size() << " edge points, distance median "
+            << percentile(d, 0.5) / s.diagonal << " p90 " << percentile(d, 0.9) / s.diagonal << " dB; "
+            << s.projected.corner_points.size() << " corner points, " << near_corner << " near a corner" << std::endl;
+  CHECK(percentile(d, 0.5) <= projection_median_tolerance_noisy * s.diagonal);
+  CHECK(percentile(d, 0.9) <= projection_p90_tolerance_noisy * s.diagonal);
+  CHECK(s.projected.corner_points.size() == 10);
   CHECK(near_corner >= 7);
 }
 

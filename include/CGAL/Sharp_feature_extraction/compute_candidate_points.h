@@ -38,7 +38,7 @@ namespace CGAL {
 ///   \cgalParamNBegin{point_map} maps a range item to its `Point_3`; default: identity. \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits} an instance of a CGAL kernel; default: the point's kernel. \cgalParamNEnd
 ///   \cgalParamNBegin{degree_fitting} degree of the jet (1 or 2); default: 2. \cgalParamNEnd
-///   \cgalParamNBegin{threshold_distance} the residual threshold tau (a distance); default: the mean residual. \cgalParamNEnd
+///   \cgalParamNBegin{threshold_distance} the residual threshold tau (a distance); default: the mean residual of the points whose residual is at most their neighbourhood's radius (larger ones come from outliers). \cgalParamNEnd
 ///   \cgalParamNBegin{callback} a `std::function<bool(double)>` called with the progress in [0,1];
 ///     returning `false` stops the computation. \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors} stage-1 neighbourhood size; default: derived. \cgalParamNEnd

@@ -38,6 +38,10 @@ struct Completion_constants
   static constexpr double inflation_step = -0.53;
   /// Free-ended curves shorter than this, relative to the growth radius, are noise.
   static constexpr double min_length = 4;
+  /// A short spur is dropped at a corner where the other two curves turn by less than this
+  /// angle (degrees): one crease crossed by a fragment. Below the 45-degree turns where a
+  /// chamfer's end meets the faces, whose short creases are real.
+  static constexpr double spur_crossing_turn_angle = 30;
   /// Passes over all ends; each pass stops at the first change.
   static constexpr std::size_t max_rounds = 10000;
   /// Smallest eigenvalue of the junction system (a sum of projectors): below it the tangents
@@ -486,7 +490,7 @@ private:
   {
     for(bool changed = true; changed;)
     {
-      changed = false;
+      changed = drop_short_spurs();
       const auto at = incidences();
       for(std::size_t k = 0; k < at.size() && !changed; ++k)
       {
@@ -500,12 +504,8 @@ private:
         {
           const auto [c0, b0] = at[k][0];
           const auto [c1, b1] = at[k][1];
-          if(m_net.curves[c0].points.size() < 2 || m_net.curves[c1].points.size() < 2)
-            continue;
-          // Tangents pointing out of the corner along each curve.
-          const Vec3 t0 = -end_tangent(m_net.curves[c0], b0), t1 = -end_tangent(m_net.curves[c1], b1);
           // A valence-2 corner is kept only where the curve turns sharply (see split_sharp_turns).
-          if(t0.dot(t1) > -std::cos(radians(C::sharp_turn_angle)))
+          if(!continue_each_other(at[k][0], at[k][1]))
             continue;
           if(c0 == c1)
           {
@@ -533,6 +533,45 @@ private:
       }
     }
     remove_unused_corners();
+  }
+
+  // Whether the curves of two ends at a corner continue each other there: their tangents out
+  // of the corner turn by less than `turn_angle` (degrees).
+  bool continue_each_other(const std::pair<std::size_t, bool>& a, const std::pair<std::size_t, bool>& b,
+                           double turn_angle = C::sharp_turn_angle) const
+  {
+    const Curve& ca = m_net.curves[a.first];
+    const Curve& cb = m_net.curves[b.first];
+    if(ca.points.size() < 2 || cb.points.size() < 2)
+      return false;
+    const Vec3 ta = -end_tangent(ca, a.second), tb = -end_tangent(cb, b.second);
+    return ta.dot(tb) <= -std::cos(radians(turn_angle));
+  }
+
+  // A corner where two curves continue each other and a third, from the corner to a free end,
+  // is shorter than the shortest free curve kept, is a crease crossed by a fragment of noise
+  // (under noise, around small holes and along thin walls): the fragment is dropped, and the
+  // corner then merges through. A short crease that ends at a true corner is kept: there the
+  // other curves turn (see `spur_crossing_turn_angle`).
+  bool drop_short_spurs()
+  {
+    const auto at = incidences();
+    for(const auto& ends : at)
+    {
+      if(ends.size() != 3)
+        continue;
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        const Curve& spur = m_net.curves[ends[k].first];
+        if(spur.closed || (spur.front_corner == no_index) == (spur.back_corner == no_index)
+           || curve_length(spur) >= C::min_length * m_scales.growth_radius
+           || !continue_each_other(ends[(k + 1) % 3], ends[(k + 2) % 3], C::spur_crossing_turn_angle))
+          continue;
+        m_net.curves.erase(m_net.curves.begin() + std::ptrdiff_t(ends[k].first));
+        return true;
+      }
+    }
+    return false;
   }
 
   void remove_unused_corners()

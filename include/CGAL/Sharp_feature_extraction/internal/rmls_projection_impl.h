@@ -47,10 +47,20 @@ struct Forward_search_constants
   static constexpr double max_support_gap = 0.5;        // member-to-e distance, relative to the radius
   static constexpr std::size_t max_newton_steps = 50;
   static constexpr double newton_step_tolerance = 1e-4; // relative to the sampling spacing
-  static constexpr std::size_t refinement_rounds = 3;
+  /// Rounds of the competitive refinement, at most: it stops when no point changes surface.
+  /// Exact quadrics settle in one or two rounds. Under noise each round moves the planes a
+  /// little as the crease band is reassigned: measured on fandisk at 1% noise, the share of
+  /// projected points farther than 1% dB from the true crease falls from 8% after 3 rounds to
+  /// 2.5% after 8 and stays there.
+  static constexpr std::size_t quadric_refinement_rounds = 3;
+  static constexpr std::size_t plane_refinement_rounds = 16;
   /// Gaussian weights of the refined fits, centred at the candidate (moving least squares):
-  /// bandwidth relative to the neighbourhood radius.
-  static constexpr double fit_bandwidth = 0.8;
+  /// bandwidth relative to the neighbourhood radius. The planes of noisy data use the larger
+  /// neighbourhoods of the noise, and a narrower window keeps the curvature of the faces and
+  /// the neighbouring creases out of them (bandwidth 0.5 against 0.8: mean F1 over the nine
+  /// benchmark parts at 1% noise 0.78 against 0.74).
+  static constexpr double quadric_fit_bandwidth = 0.8;
+  static constexpr double plane_fit_bandwidth = 0.5;
 };
 
 /// One smooth surface found by the forward search.
@@ -125,31 +135,34 @@ public:
   /// forward search, where the first surface also takes the points of the next one that lie
   /// within the tolerance near the crease and is biased towards it. Two planes (noisy data)
   /// compete as half-planes, each bounded by their intersection line (see `half_residual()`).
+  /// The refinement stops after `rounds` rounds, or earlier when no point changed surface.
   void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds,
               const Vec3& center, double bandwidth)
   {
     for(std::size_t round = 0; round < rounds; ++round)
     {
       const bool halves = degree == 1 && set.size() == 2 && set_halves(*set[0], *set[1], center);
+      m_previous.swap(m_owner);
+      m_owner.assign(local.size(), no_surface);
       for(Rmls_surface* s : set)
         s->members.clear();
       for(std::size_t i = 0; i < local.size(); ++i)
       {
-        Rmls_surface* best = nullptr;
         double best_residual = tolerance;
         for(std::size_t k = 0; k < set.size(); ++k)
         {
-          Rmls_surface* s = set[k];
-          const double r = halves ? half_residual(*s, k, local[i]) : s->fit.residual(local[i]);
+          const double r = halves ? half_residual(*set[k], k, local[i]) : set[k]->fit.residual(local[i]);
           if(r <= best_residual)
           {
             best_residual = r;
-            best = s;
+            m_owner[i] = k;
           }
         }
-        if(best != nullptr)
-          best->members.push_back(i);
+        if(m_owner[i] != no_surface)
+          set[m_owner[i]]->members.push_back(i);
       }
+      if(round > 0 && m_owner == m_previous)
+        break;
       for(Rmls_surface* s : set)
       {
         if(s->members.size() >= 3)
@@ -168,6 +181,9 @@ public:
   }
 
 private:
+  static constexpr std::size_t no_surface = std::numeric_limits<std::size_t>::max();
+  // The surface of each point of `local` in the current and the previous refinement round.
+  std::vector<std::size_t> m_owner, m_previous;
   std::vector<bool> m_assigned, m_member;
   std::vector<std::size_t> m_free, m_centers, m_seed;
   std::vector<double> m_distance, m_center_distance, m_selection;
@@ -446,9 +462,11 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
     if(!parallel)
       distinct.push_back(&s);
   }
+  const bool planes = surface_degree(scales, settings) == 1;
   if(distinct.size() >= 2)
-    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings), C::refinement_rounds,
-                  p, C::fit_bandwidth * radius);
+    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings),
+                  planes ? C::plane_refinement_rounds : C::quadric_refinement_rounds, p,
+                  (planes ? C::plane_fit_bandwidth : C::quadric_fit_bandwidth) * radius);
   std::vector<const Rmls_surface*> kept;
   for(const Rmls_surface* s : distinct)
     if(s->members.size() >= C::min_surface_points)
