@@ -16,7 +16,7 @@ namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point_3;
-namespace sfe = CGAL::Sharp_feature_extraction::parameters;
+namespace sfe_parameters = CGAL::Sharp_feature_extraction::parameters;
 using namespace sfe_test;
 
 /// Runs the whole pipeline; the result must be free of NaN whatever it contains.
@@ -201,10 +201,10 @@ TEST_CASE("out-of-range parameters are rejected with std::invalid_argument", "[b
   const std::vector<Point_3> points = to_points<Point_3>(sample(unit_cube(), 500, 0));
   CGAL::Sharp_features<K> result;
   auto run = [&](const auto& np) { return CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, result, np); };
-  CHECK_THROWS_AS(run(sfe::rmls_tolerance(-1.)), std::invalid_argument);
-  CHECK_THROWS_AS(run(sfe::growth_radius(std::numeric_limits<double>::quiet_NaN())), std::invalid_argument);
-  CHECK_THROWS_AS(run(sfe::completion_distance(std::numeric_limits<double>::infinity())), std::invalid_argument);
-  CHECK_THROWS_AS(run(sfe::corner_radius(-0.1)), std::invalid_argument);
+  CHECK_THROWS_AS(run(sfe_parameters::rmls_tolerance(-1.)), std::invalid_argument);
+  CHECK_THROWS_AS(run(sfe_parameters::growth_radius(std::numeric_limits<double>::quiet_NaN())), std::invalid_argument);
+  CHECK_THROWS_AS(run(sfe_parameters::completion_distance(std::numeric_limits<double>::infinity())), std::invalid_argument);
+  CHECK_THROWS_AS(run(sfe_parameters::corner_radius(-0.1)), std::invalid_argument);
   CHECK_THROWS_AS(run(CGAL::parameters::degree_fitting(3)), std::invalid_argument);
   CHECK_THROWS_AS(run(CGAL::parameters::sharpness_angle(0.)), std::invalid_argument);
   CHECK_THROWS_AS(run(CGAL::parameters::sharpness_angle(90.)), std::invalid_argument);

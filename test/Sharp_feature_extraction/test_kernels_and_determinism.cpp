@@ -25,12 +25,13 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Simple_cartesian<double> Cartesian;
 using namespace sfe_test;
 
-constexpr std::size_t number_of_points = 20000;
+/// Points of every test cloud.
+constexpr std::size_t cloud_size = 20000;
 
 template <typename K>
 CGAL::Sharp_features<K> extract_with(const Shape& shape, double noise)
 {
-  const std::vector<typename K::Point_3> points = to_points<typename K::Point_3>(sample(shape, number_of_points, noise));
+  const std::vector<typename K::Point_3> points = to_points<typename K::Point_3>(sample(shape, cloud_size, noise));
   CGAL::Sharp_features<K> result;
   REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, result));
   return result;
@@ -113,7 +114,7 @@ TEST_CASE("Epick and Simple_cartesian<double> give the same curves", "[kernels]"
 
 TEST_CASE("points given through a point map give the same curves as plain points", "[kernels]")
 {
-  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), number_of_points, 0));
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), cloud_size, 0));
   std::vector<std::pair<Epick::Point_3, int>> items;
   for(std::size_t i = 0; i < points.size(); ++i)
     items.emplace_back(points[i], int(i));
@@ -143,7 +144,7 @@ TEST_CASE("Sequential_tag and Parallel_tag give bit-identical curves", "[determi
     for(const Shape& shape : {unit_cube(), capped_cylinder()})
     {
       INFO(shape.name << ", noise " << noise);
-      const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(shape, number_of_points, noise));
+      const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(shape, cloud_size, noise));
       CGAL::Sharp_features<Epick> sequential, parallel;
       REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, sequential));
       REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_tag>(points, parallel));
@@ -200,7 +201,7 @@ TEST_CASE("the library called from 4 user threads at once, each on its own cloud
   std::vector<CGAL::Sharp_features<Epick>> alone;
   for(const auto& input : inputs)
   {
-    clouds.push_back(to_points<Epick::Point_3>(sample(input.first, number_of_points, input.second)));
+    clouds.push_back(to_points<Epick::Point_3>(sample(input.first, cloud_size, input.second)));
     alone.push_back(extract_with<Epick>(input.first, input.second));
   }
   // Each thread runs the library's own parallel loops (TBB inside user threads), then the
@@ -220,7 +221,7 @@ TEST_CASE("the library called from 4 user threads at once, each on its own cloud
 
 TEST_CASE("the callback receives monotone progress in [0, 1] ending at 1", "[callback]")
 {
-  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), number_of_points, 0));
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), cloud_size, 0));
   Progress_recorder recorder;
   CGAL::Sharp_features<Epick> result;
   REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(
@@ -241,7 +242,7 @@ TEST_CASE("the callback receives monotone progress in [0, 1] ending at 1", "[cal
 
 TEST_CASE("a callback returning false cancels the extraction at any stage without failure", "[callback]")
 {
-  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), number_of_points, 0));
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(capped_cylinder(), cloud_size, 0));
   // Stop at the first report, then during stages 1, 2, 3 and 4 (see the progress split).
   for(double stop_at : {0., 0.2, 0.5, 0.93, 0.98, 0.995})
   {
@@ -267,7 +268,7 @@ TEST_CASE("a callback returning false cancels the extraction at any stage withou
 
 TEST_CASE("stage functions report progress and stop when the callback returns false", "[callback]")
 {
-  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), number_of_points, 0));
+  const std::vector<Epick::Point_3> points = to_points<Epick::Point_3>(sample(unit_cube(), cloud_size, 0));
   Progress_recorder recorder;
   CGAL::Candidate_points<Epick> candidates;
   REQUIRE(CGAL::compute_candidate_points<CGAL::Sequential_tag>(points, candidates,
