@@ -13,6 +13,7 @@
 #include "meshing/spatial_grid.h"
 
 #include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/squared_distance_3.h>
@@ -57,6 +58,8 @@ struct Curve_repair_report
   std::size_t dropped_parallel = 0;    ///< curves dropped because they ran along a longer one (duplicates)
   std::size_t dropped_close = 0;       ///< curves dropped because they came too close to another one
   std::size_t discarded_normals = 0;   ///< curves whose normals did not match their points
+  std::size_t moved_onto_surface = 0;  ///< vertices moved onto the implicit surface
+  std::size_t dropped_off_surface = 0; ///< curves with a vertex too far from the implicit surface
 
   std::string summary() const
   {
@@ -67,7 +70,8 @@ struct Curve_repair_report
       {"loops closed", closed_loops}, {"junction splits", junction_splits},
       {"sharp-turn splits", sharp_turn_splits}, {"short curves dropped", dropped_short},
       {"parallel duplicates dropped", dropped_parallel}, {"too close curves dropped", dropped_close},
-      {"normals discarded", discarded_normals}};
+      {"normals discarded", discarded_normals}, {"vertices moved onto the surface", moved_onto_surface},
+      {"curves off the surface dropped", dropped_off_surface}};
     for(const auto& item : items)
       if(item.second > 0)
         out << ", " << item.second << " " << item.first;
@@ -654,6 +658,76 @@ void drop_feature_curves_in_contact(std::vector<CGAL::Feature_polyline<GeomTrait
   for(std::size_t c = 0; c < curves.size(); ++c)
     if(!dropped[c])
       kept.push_back(std::move(curves[c]));
+  curves = std::move(kept);
+}
+
+/// moves `p` onto the zero set of `function` (a signed distance, up to a factor near 1) by
+/// Newton steps along its gradient, taken by central differences `gradient_step` apart. Returns
+/// false, leaving `p`, when no zero within `max_move` is found.
+template <typename Function, typename Point_3>
+bool project_onto_zero_set(const Function& function, Point_3& p, double gradient_step, double max_move)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
+  // converged: a hundredth of the gradient step, far below any facet distance
+  const double tolerance = 1e-2 * gradient_step;
+  const int maximal_steps = 20;
+  Point_3 x = p;
+  for(int step = 0; step < maximal_steps; ++step) {
+    const double value = function(x);
+    if(std::abs(value) <= tolerance) {
+      if(repair_internal::point_distance(x, p) > max_move)
+        return false;
+      p = x;
+      return true;
+    }
+    const double h = gradient_step;
+    const Vector_3 gradient(
+      (function(x + Vector_3(h, 0, 0)) - function(x - Vector_3(h, 0, 0))) / (2 * h),
+      (function(x + Vector_3(0, h, 0)) - function(x - Vector_3(0, h, 0))) / (2 * h),
+      (function(x + Vector_3(0, 0, h)) - function(x - Vector_3(0, 0, h))) / (2 * h));
+    const double squared_norm = CGAL::to_double(gradient.squared_length());
+    if(!(squared_norm > 0))
+      return false;
+    x = x - (value / squared_norm) * gradient;
+    if(repair_internal::point_distance(x, p) > max_move)
+      return false;
+  }
+  return false;
+}
+
+/// Mesh_3 makes every protected vertex a mesh vertex and refines the surface around it until
+/// the facets are within the facet distance of the surface: a protected vertex off the implicit
+/// surface can never be reached, and the refinement shrinks towards it without end. So every
+/// vertex of `curves` is moved onto the zero set of `function`; a curve with a vertex that has
+/// no zero within `max_move` does not lie on the surface there (a curve the implicit surface
+/// does not follow) and is dropped. Shared points stay shared: the projection is a function of
+/// the point alone.
+template <typename GeomTraits, typename Function>
+void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
+                                         const Function& function, double gradient_step,
+                                         double max_move, Curve_repair_report& report)
+{
+  typedef CGAL::Feature_polyline<GeomTraits> Curve;
+  std::vector<Curve> kept;
+  for(Curve& c : curves) {
+    bool on_surface = true;
+    std::size_t moved = 0;
+    for(auto& p : c.points) {
+      const auto before = p;
+      if(!project_onto_zero_set(function, p, gradient_step, max_move)) {
+        on_surface = false;
+        break;
+      }
+      moved += (p != before) ? 1 : 0;
+    }
+    if(!on_surface) {
+      ++report.dropped_off_surface;
+      continue;
+    }
+    report.moved_onto_surface += moved;
+    kept.push_back(std::move(c));
+  }
+  report.output_curves -= curves.size() - kept.size();
   curves = std::move(kept);
 }
 
