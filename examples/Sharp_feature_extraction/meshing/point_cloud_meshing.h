@@ -5,7 +5,8 @@
 //   1. sampling spacing s of the cloud (it sets every size below);
 //   2. repair of the curves for Mesh_3 (feature_curve_repair.h), then their interior vertices
 //      moved onto the crease of the two surfaces fitted on either side (crease_model.h);
-//   3. normals: jet estimation, MST orientation, then, near the curves, the normal of the
+//   3. normals: jet estimation, orientation along the sheets of the surface
+//      (orient_normals_along_sheets.h), then, near the curves, the normal of the
 //      point's own side of the crease (crease_model.h);
 //   4. Poisson implicit function from the oriented points, sharpened near the curves;
 //   5. every curve vertex moved onto the zero set of that function (a curve that is not on it
@@ -19,11 +20,11 @@
 #include "meshing/crease_model.h"
 #include "meshing/feature_curve_repair.h"
 #include "meshing/feature_protected_meshing.h"
+#include "meshing/orient_normals_along_sheets.h"
 
 #include <CGAL/Poisson_reconstruction_function.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
-#include <CGAL/mst_orient_normals.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -58,7 +59,7 @@ struct Point_cloud_meshing_options
   /// Absolute overrides (0: use the relative value).
   double spacing = 0, absolute_facet_size = 0, absolute_facet_distance = 0, absolute_edge_size = 0;
 
-  /// Neighbours for jet normal estimation and MST orientation (CGAL's usual 18).
+  /// Neighbours for jet normal estimation and orientation (CGAL's usual 18).
   unsigned normal_neighbors = 18;
   /// Curves are snapped and dropped at these multiples of s (feature_curve_repair.h).
   double snap_tolerance = 1.5;
@@ -239,10 +240,21 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
       return true;
     }));
   report("normals", 0.5, seconds_since(start));
-  auto unoriented = CGAL::mst_orient_normals(pwn, options.normal_neighbors,
-                                             CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
-  result.unoriented_points = static_cast<std::size_t>(std::distance(unoriented, pwn.end()));
-  pwn.erase(unoriented, pwn.end());
+  {
+    std::vector<Point_3> sample_points;
+    std::vector<Vector_3> sample_normals;
+    for(const Point_with_normal& p : pwn) {
+      sample_points.push_back(p.first);
+      sample_normals.push_back(p.second);
+    }
+    const std::vector<bool> oriented =
+      orient_normals_along_sheets<GeomTraits>(sample_points, sample_normals, options.normal_neighbors);
+    pwn.clear();
+    for(std::size_t i = 0; i < sample_points.size(); ++i)
+      if(oriented[i])
+        pwn.push_back(Point_with_normal(sample_points[i], sample_normals[i]));
+    result.unoriented_points = sample_points.size() - pwn.size();
+  }
   report("normals", 0.8, seconds_since(start));
 
   const Crease_model_options model_options = Crease_model_options::for_spacing(s);
