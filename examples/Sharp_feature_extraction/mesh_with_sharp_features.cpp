@@ -353,7 +353,7 @@ int main(int argc, char* argv[])
           << "\nfacet_distance=" << result.sizes.facet_distance << "\nfar_field=" << result.far_field
           << "\nfeatures=" << (features ? 1 : 0) << "\ncurves_in=" << result.repair.input_curves
           << "\ncurves_protected=" << result.protected_curves
-          << "\ncurves_dropped_off_surface=" << result.repair.dropped_off_surface
+          << "\ncurves_cut_off_surface=" << result.repair.cut_off_surface
           << "\ncurve_vertices_moved_onto_surface=" << result.repair.moved_onto_surface
           << "\ncurve_problems=" << result.curve_problems.size()
           << "\ncorrected_normals=" << result.corrected_normals

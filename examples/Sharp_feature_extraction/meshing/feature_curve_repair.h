@@ -59,7 +59,7 @@ struct Curve_repair_report
   std::size_t dropped_close = 0;       ///< curves dropped because they came too close to another one
   std::size_t discarded_normals = 0;   ///< curves whose normals did not match their points
   std::size_t moved_onto_surface = 0;  ///< vertices moved onto the implicit surface
-  std::size_t dropped_off_surface = 0; ///< curves with a vertex too far from the implicit surface
+  std::size_t cut_off_surface = 0;     ///< curves cut where a vertex is too far from the implicit surface
 
   std::string summary() const
   {
@@ -71,7 +71,7 @@ struct Curve_repair_report
       {"sharp-turn splits", sharp_turn_splits}, {"short curves dropped", dropped_short},
       {"parallel duplicates dropped", dropped_parallel}, {"too close curves dropped", dropped_close},
       {"normals discarded", discarded_normals}, {"vertices moved onto the surface", moved_onto_surface},
-      {"curves off the surface dropped", dropped_off_surface}};
+      {"curves cut off the surface", cut_off_surface}};
     for(const auto& item : items)
       if(item.second > 0)
         out << ", " << item.second << " " << item.first;
@@ -698,36 +698,68 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
 /// Mesh_3 makes every protected vertex a mesh vertex and refines the surface around it until
 /// the facets are within the facet distance of the surface: a protected vertex off the implicit
 /// surface can never be reached, and the refinement shrinks towards it without end. So every
-/// vertex of `curves` is moved onto the zero set of `function`; a curve with a vertex that has
-/// no zero within `max_move` does not lie on the surface there (a curve the implicit surface
-/// does not follow) and is dropped. Shared points stay shared: the projection is a function of
-/// the point alone.
+/// vertex of `curves` is moved onto the zero set of `function`. Where a vertex has no zero
+/// within `max_move`, the curve does not lie on the surface (a spurious curve, or a corner the
+/// surface rounds off): the curve is cut there, the pieces on either side shortened by
+/// `cut_margin` (so that their new ends stay clear of the other curves meeting at that point),
+/// and pieces shorter than `minimum_length` are dropped. Shared points stay shared: the
+/// projection is a function of the point alone.
 template <typename GeomTraits, typename Function>
 void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
-                                         const Function& function, double gradient_step,
-                                         double max_move, Curve_repair_report& report)
+                                         const Function& function, double gradient_step, double max_move,
+                                         double cut_margin, double minimum_length,
+                                         Curve_repair_report& report)
 {
   typedef CGAL::Feature_polyline<GeomTraits> Curve;
+  using namespace repair_internal;
   std::vector<Curve> kept;
   for(Curve& c : curves) {
-    bool on_surface = true;
-    std::size_t moved = 0;
-    for(auto& p : c.points) {
-      const auto before = p;
-      if(!project_onto_zero_set(function, p, gradient_step, max_move)) {
-        on_surface = false;
-        break;
-      }
-      moved += (p != before) ? 1 : 0;
+    const std::size_t n = c.points.size();
+    std::vector<bool> on_surface(n);
+    for(std::size_t i = 0; i < n; ++i) {
+      const auto before = c.points[i];
+      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, max_move);
+      report.moved_onto_surface += (on_surface[i] && c.points[i] != before) ? 1 : 0;
     }
-    if(!on_surface) {
-      ++report.dropped_off_surface;
+    if(std::find(on_surface.begin(), on_surface.end(), false) == on_surface.end()) {
+      kept.push_back(std::move(c));
       continue;
     }
-    report.moved_onto_surface += moved;
-    kept.push_back(std::move(c));
+    ++report.cut_off_surface;
+    const std::vector<double> arc = arc_lengths(c);
+    auto near_cut = [&](std::size_t i, std::size_t cut) {
+      return point_distance(c.points[i], c.points[cut]) < cut_margin;
+    };
+    for(std::size_t begin = 0; begin < n;) {
+      if(!on_surface[begin]) {
+        ++begin;
+        continue;
+      }
+      std::size_t end = begin;
+      while(end < n && on_surface[end])
+        ++end;
+      // [first, last): the run [begin, end) without its vertices within `cut_margin` of a vertex off the surface
+      std::size_t first = begin, last = end;
+      if(begin > 0)
+        while(first < end && near_cut(first, begin - 1))
+          ++first;
+      if(end < n)
+        while(last > first && near_cut(last - 1, end))
+          --last;
+      if(last >= first + 2 && arc[last - 1] - arc[first] >= minimum_length) {
+        std::vector<std::size_t> cuts;
+        if(first > 0)
+          cuts.push_back(first);
+        if(last < n)
+          cuts.push_back(last - 1);
+        // the piece between the cuts: the second of the split's pieces if it starts with a cut
+        const std::vector<Curve> pieces = split(c, cuts);
+        kept.push_back(pieces[first > 0 ? 1 : 0]);
+      }
+      begin = end;
+    }
   }
-  report.output_curves -= curves.size() - kept.size();
+  report.output_curves = report.output_curves + kept.size() - curves.size();
   curves = std::move(kept);
 }
 

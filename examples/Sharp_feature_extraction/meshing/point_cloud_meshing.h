@@ -9,8 +9,8 @@
 //      (orient_normals_along_sheets.h), then, near the curves, the normal of the
 //      point's own side of the crease (crease_model.h);
 //   4. Poisson implicit function from the oriented points, sharpened near the curves;
-//   5. every curve vertex moved onto the zero set of that function (a curve that is not on it
-//      is dropped), then Mesh_3 on it, the curves protected (feature_protected_meshing.h).
+//   5. every curve vertex moved onto the zero set of that function (a curve is cut where it
+//      is not on it), then Mesh_3 on it, the curves protected (feature_protected_meshing.h).
 // Without curves (or with every use of them switched off) the steps are identical, so the
 // comparison isolates what the curves bring.
 
@@ -65,11 +65,14 @@ struct Point_cloud_meshing_options
   double snap_tolerance = 1.5;
   double minimum_curve_length = 3;
   /// Every curve vertex is moved onto the implicit surface (`project_feature_curves_onto_surface()`);
-  /// a curve with a vertex farther than this from it is dropped. Measured at 0.5% noise (25k
-  /// points, anchor, joint, part): vertices of curves on true creases move up to 1.5 s (the
-  /// shared corners, where a third surface rounds the two-surface model), those of curves
-  /// 3 s or more from any true crease up to 38 s, or find no zero at all.
+  /// a curve is cut where a vertex is farther than this from it. Measured at 0.5% noise (25k
+  /// points, joint): vertices of curves on true creases move up to 1.5 s (at the shared
+  /// corners, where a third surface rounds the two-surface model), those of curves 3 s or more
+  /// from any true crease up to 38 s, or find no zero at all.
   double maximal_curve_move_onto_surface = 2;
+  /// The pieces of a cut curve end this far from the cut, two snap tolerances: a curve that
+  /// leaves the cut point at 30 degrees or more passes their new ends farther than one.
+  double curve_cut_margin = 3;
   /// Step of the central differences of that projection: small against every feature of the
   /// surface, large against the solver's noise.
   double surface_projection_step = 0.05;
@@ -307,7 +310,9 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
   // the protected vertices onto the surface Mesh_3 will mesh
   if(options.protect_curves) {
     project_feature_curves_onto_surface(curves, function, options.surface_projection_step * s,
-                                        options.maximal_curve_move_onto_surface * s, result.repair);
+                                        options.maximal_curve_move_onto_surface * s,
+                                        options.curve_cut_margin * s, repair_options.minimum_length,
+                                        result.repair);
     // a moved vertex may now come too close to another curve
     drop_feature_curves_in_contact(curves, repair_options.snap_tolerance, result.repair);
   }
