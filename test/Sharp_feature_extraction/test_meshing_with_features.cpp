@@ -302,7 +302,8 @@ TEST_CASE("the crease model leaves the smooth function alone along a curve whose
     spurious.points.push_back(Point_3(0.3 + 0.02 * i, 0.4, 0));
     spurious.normals.push_back({{down, tilted}});
   }
-  const sfe_meshing::Crease_model<K> model({spurious}, points, sfe_meshing::Crease_model_options::for_spacing(s));
+  const sfe_meshing::Crease_model<K> model({spurious}, points,
+                                           sfe_meshing::Crease_model_options::for_spacing(s));
   // on the face, around the middle of the curve: the model must not move the surface
   double largest = 0;
   for(double dy = -4 * s; dy <= 4 * s; dy += 0.25 * s)
@@ -316,14 +317,14 @@ TEST_CASE("the crease model leaves the smooth function alone along a curve whose
   CHECK(largest < 0.1 * s);
 }
 
-TEST_CASE("curve vertices are moved onto the implicit surface, and a curve is cut, a margin away, "
-          "where a vertex is farther from it than the allowed move (Mesh_3 refines without end "
-          "towards a protected vertex off the surface)",
+TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curve is cut, a "
+          "margin away, where a vertex is farther from it than the allowed move (Mesh_3 refines "
+          "without end towards a protected vertex off the surface)",
           "[meshing]")
 {
   // the unit sphere as a signed distance; two arcs along the equator, vertices s/2 apart
   auto sphere = [](const Point_3& x) { return std::sqrt((x - CGAL::ORIGIN).squared_length()) - 1; };
-  const double s = 0.01, max_move = 2 * s, margin = 3 * s, minimum_length = 3 * s;
+  const double s = 0.01, tolerance = 0.05 * s, max_move = 2 * s, margin = 3 * s, minimum_length = 3 * s;
   const int steps = 60;
   const double step_angle = 0.5 * s;
   Curve near_surface, with_far_vertex;
@@ -337,17 +338,28 @@ TEST_CASE("curve vertices are moved onto the implicit surface, and a curve is cu
     with_far_vertex.points.push_back(Point_3(r_far * std::cos(a), r_far * std::sin(a), 1e-3));
   }
   std::vector<Curve> curves = {near_surface, with_far_vertex};
+  // the outer vertices of the first arc stand for vertices on a fitted crease: they stay
+  std::vector<std::vector<bool>> on_fitted_crease(1, std::vector<bool>(steps + 1, false));
+  for(int i = 1; i <= steps; i += 2)
+    on_fitted_crease[0][i] = true;
   sfe_meshing::Curve_repair_report report;
   report.output_curves = curves.size();
-  sfe_meshing::project_feature_curves_onto_surface<K>(curves, sphere, 0.05 * s, max_move, margin,
-                                                      minimum_length, report);
+  sfe_meshing::project_feature_curves_onto_surface<K>(curves, on_fitted_crease, sphere, 0.05 * s, tolerance,
+                                                      max_move, margin, minimum_length, report);
   CHECK(report.cut_off_surface == 1);
   REQUIRE(curves.size() == 3);
   CHECK(report.output_curves == 3);
-  CHECK(curves[0].points.size() == near_surface.points.size());
-  for(const Curve& c : curves)
-    for(const Point_3& p : c.points)
-      CHECK(std::abs(sphere(p)) < 1e-3 * s);
+  REQUIRE(curves[0].points.size() == near_surface.points.size());
+  for(int i = 0; i <= steps; ++i) {
+    const Point_3& p = curves[0].points[i];
+    if(on_fitted_crease[0][i])
+      CHECK(p == near_surface.points[i]);
+    else
+      CHECK(std::abs(sphere(p)) <= tolerance);
+  }
+  for(std::size_t piece = 1; piece < 3; ++piece)
+    for(const Point_3& p : curves[piece].points)
+      CHECK(std::abs(sphere(p)) <= tolerance);
   // the two pieces keep the rest of the arc: all but the margin around the far vertex
   const Point_3 far_vertex = with_far_vertex.points[steps / 2];
   for(std::size_t piece = 1; piece < 3; ++piece) {

@@ -661,15 +661,15 @@ void drop_feature_curves_in_contact(std::vector<CGAL::Feature_polyline<GeomTrait
   curves = std::move(kept);
 }
 
-/// moves `p` onto the zero set of `function` (a signed distance, up to a factor near 1) by
-/// Newton steps along its gradient, taken by central differences `gradient_step` apart. Returns
-/// false, leaving `p`, when no zero within `max_move` is found.
+/// moves `p` to within `tolerance` of the zero set of `function` (a signed distance, up to a
+/// factor near 1) by Newton steps along its gradient, taken by central differences
+/// `gradient_step` apart; a point already that close stays. Returns false, leaving `p`, when no
+/// such point within `max_move` is found.
 template <typename Function, typename Point_3>
-bool project_onto_zero_set(const Function& function, Point_3& p, double gradient_step, double max_move)
+bool project_onto_zero_set(const Function& function, Point_3& p, double gradient_step, double tolerance,
+                           double max_move)
 {
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
-  // converged: a hundredth of the gradient step, far below any facet distance
-  const double tolerance = 1e-2 * gradient_step;
   const int maximal_steps = 20;
   Point_3 x = p;
   for(int step = 0; step < maximal_steps; ++step) {
@@ -697,8 +697,12 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
 
 /// Mesh_3 makes every protected vertex a mesh vertex and refines the surface around it until
 /// the facets are within the facet distance of the surface: a protected vertex off the implicit
-/// surface can never be reached, and the refinement shrinks towards it without end. So every
-/// vertex of `curves` is moved onto the zero set of `function`. Where a vertex has no zero
+/// surface by more than that can never be reached, and the refinement shrinks towards it
+/// without end. So every vertex of `curves` farther than `tolerance` from the zero set of
+/// `function` is moved to within `tolerance` of it, except the vertices flagged in
+/// `on_fitted_crease` (indexed like the curves' points; may be empty): those already lie on the
+/// crease of two fitted surfaces, sharper than the zero set of a function blended across it,
+/// and stay unless the zero set is farther than `max_move`. Where a vertex has no zero
 /// within `max_move`, the curve does not lie on the surface (a spurious curve, or a corner the
 /// surface rounds off): the curve is cut there, the pieces on either side shortened by
 /// `cut_margin` (so that their new ends stay clear of the other curves meeting at that point),
@@ -706,19 +710,23 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
 /// projection is a function of the point alone.
 template <typename GeomTraits, typename Function>
 void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
-                                         const Function& function, double gradient_step, double max_move,
-                                         double cut_margin, double minimum_length,
-                                         Curve_repair_report& report)
+                                         const std::vector<std::vector<bool>>& on_fitted_crease,
+                                         const Function& function, double gradient_step,
+                                         double tolerance, double max_move, double cut_margin,
+                                         double minimum_length, Curve_repair_report& report)
 {
   typedef CGAL::Feature_polyline<GeomTraits> Curve;
   using namespace repair_internal;
   std::vector<Curve> kept;
-  for(Curve& c : curves) {
+  for(std::size_t ci = 0; ci < curves.size(); ++ci) {
+    Curve& c = curves[ci];
     const std::size_t n = c.points.size();
+    const bool flagged = ci < on_fitted_crease.size() && on_fitted_crease[ci].size() == n;
     std::vector<bool> on_surface(n);
     for(std::size_t i = 0; i < n; ++i) {
       const auto before = c.points[i];
-      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, max_move);
+      const double vertex_tolerance = (flagged && on_fitted_crease[ci][i]) ? max_move : tolerance;
+      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, vertex_tolerance, max_move);
       report.moved_onto_surface += (on_surface[i] && c.points[i] != before) ? 1 : 0;
     }
     if(std::find(on_surface.begin(), on_surface.end(), false) == on_surface.end()) {
@@ -738,7 +746,8 @@ void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<Geom
       std::size_t end = begin;
       while(end < n && on_surface[end])
         ++end;
-      // [first, last): the run [begin, end) without its vertices within `cut_margin` of a vertex off the surface
+      // [first, last): the run [begin, end) without its vertices within `cut_margin` of a
+      // vertex off the surface
       std::size_t first = begin, last = end;
       if(begin > 0)
         while(first < end && near_cut(first, begin - 1))

@@ -91,7 +91,8 @@ inline std::string first_line_of_failure(const std::string& message)
 {
   const std::string explanation = "Explanation: ";
   const std::size_t at = message.find(explanation);
-  const std::size_t begin = at == std::string::npos ? message.find_first_not_of("\n ") : at + explanation.size();
+  const std::size_t begin =
+    at == std::string::npos ? message.find_first_not_of("\n ") : at + explanation.size();
   if(begin == std::string::npos)
     return message;
   return message.substr(begin, message.find('\n', begin) - begin);
