@@ -9,8 +9,8 @@
 //      (orient_normals_along_sheets.h), then, near the curves, the normal of the
 //      point's own side of the crease (crease_model.h);
 //   4. Poisson implicit function from the oriented points, sharpened near the curves;
-//   5. every curve vertex moved onto the zero set of that function (a curve is cut where it
-//      is not on it), then Mesh_3 on it, the curves protected (feature_protected_meshing.h).
+//   5. curve vertices off the zero set of that function moved onto it (a curve is cut where
+//      it is not near it), then Mesh_3 on it, the curves protected (feature_protected_meshing.h).
 // Without curves (or with every use of them switched off) the steps are identical, so the
 // comparison isolates what the curves bring.
 
@@ -64,11 +64,11 @@ struct Point_cloud_meshing_options
   /// Curves are snapped and dropped at these multiples of s (feature_curve_repair.h).
   double snap_tolerance = 1.5;
   double minimum_curve_length = 3;
-  /// Every curve vertex is moved onto the implicit surface (`project_feature_curves_onto_surface()`);
-  /// a curve is cut where a vertex is farther than this from it. Measured at 0.5% noise (25k
-  /// points, joint): vertices of curves on true creases move up to 1.5 s (at the shared
-  /// corners, where a third surface rounds the two-surface model), those of curves 3 s or more
-  /// from any true crease up to 38 s, or find no zero at all.
+  /// A curve is cut where a vertex is farther than this from the implicit surface
+  /// (`project_feature_curves_onto_surface()`). Measured at 0.5% noise (25k points, joint):
+  /// vertices of curves on true creases are up to 1.5 s off (at the shared corners, where a
+  /// third surface rounds the two-surface model), those of curves 3 s or more from any true
+  /// crease up to 38 s, or find no zero at all.
   double maximal_curve_move_onto_surface = 2;
   /// The pieces of a cut curve end this far from the cut, two snap tolerances: a curve that
   /// leaves the cut point at 30 degrees or more passes their new ends farther than one.
