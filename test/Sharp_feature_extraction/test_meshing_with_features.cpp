@@ -338,27 +338,16 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
     with_far_vertex.points.push_back(Point_3(r_far * std::cos(a), r_far * std::sin(a), 1e-3));
   }
   std::vector<Curve> curves = {near_surface, with_far_vertex};
-  // the outer vertices of the first arc stand for vertices on a fitted crease: they stay
-  std::vector<std::vector<bool>> on_fitted_crease(1, std::vector<bool>(steps + 1, false));
-  for(int i = 1; i <= steps; i += 2)
-    on_fitted_crease[0][i] = true;
   sfe_meshing::Curve_repair_report report;
   report.output_curves = curves.size();
-  sfe_meshing::project_feature_curves_onto_surface<K>(curves, on_fitted_crease, sphere, 0.05 * s, tolerance,
-                                                      max_move, margin, minimum_length, report);
+  sfe_meshing::project_feature_curves_onto_surface<K>(curves, sphere, 0.05 * s, tolerance, max_move,
+                                                      margin, minimum_length, report);
   CHECK(report.cut_off_surface == 1);
   REQUIRE(curves.size() == 3);
   CHECK(report.output_curves == 3);
-  REQUIRE(curves[0].points.size() == near_surface.points.size());
-  for(int i = 0; i <= steps; ++i) {
-    const Point_3& p = curves[0].points[i];
-    if(on_fitted_crease[0][i])
-      CHECK(p == near_surface.points[i]);
-    else
-      CHECK(std::abs(sphere(p)) <= tolerance);
-  }
-  for(std::size_t piece = 1; piece < 3; ++piece)
-    for(const Point_3& p : curves[piece].points)
+  CHECK(curves[0].points.size() == near_surface.points.size());
+  for(const Curve& c : curves)
+    for(const Point_3& p : c.points)
       CHECK(std::abs(sphere(p)) <= tolerance);
   // the two pieces keep the rest of the arc: all but the margin around the far vertex
   const Point_3 far_vertex = with_far_vertex.points[steps / 2];

@@ -699,10 +699,7 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
 /// the facets are within the facet distance of the surface: a protected vertex off the implicit
 /// surface by more than that can never be reached, and the refinement shrinks towards it
 /// without end. So every vertex of `curves` farther than `tolerance` from the zero set of
-/// `function` is moved to within `tolerance` of it, except the vertices flagged in
-/// `on_fitted_crease` (indexed like the curves' points; may be empty): those already lie on the
-/// crease of two fitted surfaces, sharper than the zero set of a function blended across it,
-/// and stay unless the zero set is farther than `max_move`. Where a vertex has no zero
+/// `function` is moved to within `tolerance` of it. Where a vertex has no zero
 /// within `max_move`, the curve does not lie on the surface (a spurious curve, or a corner the
 /// surface rounds off): the curve is cut there, the pieces on either side shortened by
 /// `cut_margin` (so that their new ends stay clear of the other curves meeting at that point),
@@ -710,7 +707,6 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
 /// projection is a function of the point alone.
 template <typename GeomTraits, typename Function>
 void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<GeomTraits>>& curves,
-                                         const std::vector<std::vector<bool>>& on_fitted_crease,
                                          const Function& function, double gradient_step,
                                          double tolerance, double max_move, double cut_margin,
                                          double minimum_length, Curve_repair_report& report)
@@ -718,15 +714,12 @@ void project_feature_curves_onto_surface(std::vector<CGAL::Feature_polyline<Geom
   typedef CGAL::Feature_polyline<GeomTraits> Curve;
   using namespace repair_internal;
   std::vector<Curve> kept;
-  for(std::size_t ci = 0; ci < curves.size(); ++ci) {
-    Curve& c = curves[ci];
+  for(Curve& c : curves) {
     const std::size_t n = c.points.size();
-    const bool flagged = ci < on_fitted_crease.size() && on_fitted_crease[ci].size() == n;
     std::vector<bool> on_surface(n);
     for(std::size_t i = 0; i < n; ++i) {
       const auto before = c.points[i];
-      const double vertex_tolerance = (flagged && on_fitted_crease[ci][i]) ? max_move : tolerance;
-      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, vertex_tolerance, max_move);
+      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, tolerance, max_move);
       report.moved_onto_surface += (on_surface[i] && c.points[i] != before) ? 1 : 0;
     }
     if(std::find(on_surface.begin(), on_surface.end(), false) == on_surface.end()) {
