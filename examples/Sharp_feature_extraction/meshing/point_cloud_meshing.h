@@ -76,12 +76,6 @@ struct Point_cloud_meshing_options
   /// Step of the central differences of that projection: small against every feature of the
   /// surface, large against the solver's noise.
   double surface_projection_step = 0.05;
-  /// Vertices within this fraction of the facet distance of the surface stay: the facets
-  /// around them can meet the distance criterion. (Leaving the vertices on a fitted crease
-  /// wherever they were within the maximal move kept fandisk's crease angles at noise 0, 1.4
-  /// instead of 1.9 degrees of error, but made Mesh_3 fail on anchor, seed 5, at noise 0 and
-  /// 0.5%.)
-  double surface_tolerance_per_facet_distance = 0.5;
   /// Mesh_3 is stopped when its triangulation holds more vertices than this many per input
   /// point (unless `limits` sets a vertex limit). A mesh finer than the sampling is not
   /// supported by the data: the refinement is running away (a valid benchmark mesh needs
@@ -315,8 +309,7 @@ mesh_point_cloud(const std::vector<typename GeomTraits::Point_3>& points,
 
   // the protected vertices onto the surface Mesh_3 will mesh
   if(options.protect_curves) {
-    const double on_surface = options.surface_tolerance_per_facet_distance * result.sizes.facet_distance;
-    project_feature_curves_onto_surface(curves, function, options.surface_projection_step * s, on_surface,
+    project_feature_curves_onto_surface(curves, function, options.surface_projection_step * s,
                                         options.maximal_curve_move_onto_surface * s,
                                         options.curve_cut_margin * s, repair_options.minimum_length,
                                         result.repair);
