@@ -2,7 +2,8 @@
 //
 // Point cloud in (no normals needed), closed triangle mesh out:
 //   1. extract the sharp feature curves (extract_sharp_features(), default parameters);
-//   2. estimate normals (jet fitting), orient them (MST), then give the points near a curve
+//   2. estimate normals (jet fitting), orient them (a spanning tree along the surface's
+//      sheets, meshing/orient_normals_along_sheets.h), then give the points near a curve
 //      the normal of their own side of the crease, taken from the curve's two normals;
 //   3. build an implicit surface from the oriented points (Poisson reconstruction), replaced
 //      near the curves by the two surfaces that meet there, so that the creases stay sharp;
@@ -352,6 +353,8 @@ int main(int argc, char* argv[])
           << "\nfacet_distance=" << result.sizes.facet_distance << "\nfar_field=" << result.far_field
           << "\nfeatures=" << (features ? 1 : 0) << "\ncurves_in=" << result.repair.input_curves
           << "\ncurves_protected=" << result.protected_curves
+          << "\ncurves_cut_off_surface=" << result.repair.cut_off_surface
+          << "\ncurve_vertices_moved_onto_surface=" << result.repair.moved_onto_surface
           << "\ncurve_problems=" << result.curve_problems.size()
           << "\ncorrected_normals=" << result.corrected_normals
           << "\ntriangles=" << check.triangles << "\nvertices=" << check.vertices

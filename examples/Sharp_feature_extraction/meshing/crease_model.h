@@ -85,6 +85,10 @@ public:
     Vector_3 t;
     std::array<Side, 2> sides;
     std::size_t curve = 0;
+    /// Both sides fitted to enough points. A side without them keeps the plane through the
+    /// curve point normal to the curve's own normal: no model of the data (on a spurious curve
+    /// across a smooth surface one side may find no points of its own).
+    bool fitted = false;
     /// Near the end of an open curve: the end and the tangent pointing out of the curve.
     /// The two-surface model does not hold beyond the end (at a corner a third surface
     /// takes over), so points on the far side of the plane through the end, normal to the
@@ -155,7 +159,7 @@ public:
     if(i == Spatial_grid<Point_3>::none)
       return false;
     const Sample& s = m_samples[i];
-    if(s.sides[0].support < minimum_support || s.sides[1].support < minimum_support)
+    if(!s.fitted)
       return false;
     Point_3 x = p;
     for(int iteration = 0; iteration < 20; ++iteration) {
@@ -231,7 +235,8 @@ public:
       nearest2 = (std::min)(nearest2, d2);
       const double k = CGAL::square(1 - d2 / radius2);
       mass += k;
-      const double kept = k * s.before_end(x, m_options.sample_step);
+      // an unfitted sample counts in the mass only: the model fades where it has no data
+      const double kept = s.fitted ? k * s.before_end(x, m_options.sample_step) : 0.;
       if(kept <= 0)
         return;
       const double g0 = signed_distance(s, 0, x), g1 = signed_distance(s, 1, x);
@@ -365,6 +370,7 @@ private:
           inliers.push_back(kept[i]);
       fit_side(s.t, side, inliers);
     }
+    s.fitted = s.sides[0].support >= minimum_support && s.sides[1].support >= minimum_support;
   }
 
   static double height_residual(const Vector_3& t, const Side& side, const Vector_3& w)
@@ -414,7 +420,7 @@ private:
     const Sample& s = m_samples[i];
     if(s.is_beyond_end(p))
       return nullptr;
-    if(s.sides[0].support < minimum_support || s.sides[1].support < minimum_support)
+    if(!s.fitted)
       return nullptr;
     const double g0 = std::abs(signed_distance(s, 0, p)), g1 = std::abs(signed_distance(s, 1, p));
     side = g0 <= g1 ? 0 : 1;

@@ -85,6 +85,19 @@ double far_field_level(const Function& f, const Point_3& center, double radius, 
   return level;
 }
 
+/// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
+/// else its first line): the message spans a dozen lines of file, line and debugging data.
+inline std::string first_line_of_failure(const std::string& message)
+{
+  const std::string explanation = "Explanation: ";
+  const std::size_t at = message.find(explanation);
+  const std::size_t begin =
+    at == std::string::npos ? message.find_first_not_of("\n ") : at + explanation.size();
+  if(begin == std::string::npos)
+    return message;
+  return message.substr(begin, message.find('\n', begin) - begin);
+}
+
 /// A closed surface as a triangle soup, facets oriented outward.
 template <typename Point_3>
 struct Triangle_soup_3
@@ -175,7 +188,7 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
                              params::pointer_to_error_code = &error_code,
                              params::pointer_to_stop_atomic_boolean = &stop));
   } catch(const std::exception& e) {
-    result.error = std::string("Mesh_3 failed: ") + e.what();
+    result.error = "Mesh_3 failed: " + first_line_of_failure(e.what());
   }
   {
     std::lock_guard<std::mutex> lock(mutex);
