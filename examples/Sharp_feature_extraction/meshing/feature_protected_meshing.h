@@ -86,16 +86,27 @@ double far_field_level(const Function& f, const Point_3& center, double radius, 
 }
 
 /// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
-/// else its first line): the message spans a dozen lines of file, line and debugging data.
+/// else its first line and the failed expression): the message spans a dozen lines of file,
+/// line and debugging data.
 inline std::string first_line_of_failure(const std::string& message)
 {
-  const std::string explanation = "Explanation: ";
-  const std::size_t at = message.find(explanation);
-  const std::size_t begin =
-    at == std::string::npos ? message.find_first_not_of("\n ") : at + explanation.size();
+  auto line_after = [&](const std::string& key) -> std::string {
+    const std::size_t at = message.find(key);
+    if(at == std::string::npos)
+      return "";
+    const std::size_t begin = at + key.size();
+    return message.substr(begin, message.find('\n', begin) - begin);
+  };
+  const std::string explanation = line_after("Explanation: ");
+  if(!explanation.empty())
+    return explanation;
+  const std::size_t begin = message.find_first_not_of("\n ");
   if(begin == std::string::npos)
     return message;
-  return message.substr(begin, message.find('\n', begin) - begin);
+  const std::string first = message.substr(begin, message.find('\n', begin) - begin);
+  // An assertion without explanation: its expression says which check failed.
+  const std::string expression = line_after("Expr: ");
+  return expression.empty() ? first : first + " (" + expression + ")";
 }
 
 /// A closed surface as a triangle soup, facets oriented outward.
