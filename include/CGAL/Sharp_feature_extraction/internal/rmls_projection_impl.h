@@ -135,13 +135,17 @@ public:
   /// forward search, where the first surface also takes the points of the next one that lie
   /// within the tolerance near the crease and is biased towards it. Two planes (noisy data)
   /// compete as half-planes, each bounded by their intersection line (see `half_residual()`).
-  /// The refinement stops after `rounds` rounds, or earlier when no point changed surface.
-  void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, std::size_t rounds,
-              const Vec3& center, double bandwidth)
+  /// The fits are weighted around `center` with a window relative to the neighbourhood radius,
+  /// and the refinement stops when no point changed surface (at most a number of rounds), both
+  /// set by the degree (see `Forward_search_constants`).
+  void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, const Vec3& center)
   {
+    const bool planes = degree == 1;
+    const std::size_t rounds = planes ? C::plane_refinement_rounds : C::quadric_refinement_rounds;
+    const double bandwidth = (planes ? C::plane_fit_bandwidth : C::quadric_fit_bandwidth) * radius();
     for(std::size_t round = 0; round < rounds; ++round)
     {
-      const bool halves = degree == 1 && set.size() == 2 && set_halves(*set[0], *set[1], center);
+      const bool halves = planes && set.size() == 2 && set_halves(*set[0], *set[1], center);
       m_previous.swap(m_owner);
       m_owner.assign(local.size(), no_surface);
       for(Rmls_surface* s : set)
@@ -448,8 +452,8 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
                                                       const Scales& scales, const Settings& settings)
 {
   typedef Forward_search_constants C;
-  search.run(scales.rmls_tolerance, surface_degree(scales, settings));
-  const double radius = search.radius();
+  const int degree = surface_degree(scales, settings);
+  search.run(scales.rmls_tolerance, degree);
   const double cos_sharp = std::cos(radians(settings.sharpness_angle));
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
   std::vector<Rmls_surface*> distinct;
@@ -462,11 +466,8 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
     if(!parallel)
       distinct.push_back(&s);
   }
-  const bool planes = surface_degree(scales, settings) == 1;
   if(distinct.size() >= 2)
-    search.refine(distinct, scales.rmls_tolerance, surface_degree(scales, settings),
-                  planes ? C::plane_refinement_rounds : C::quadric_refinement_rounds, p,
-                  (planes ? C::plane_fit_bandwidth : C::quadric_fit_bandwidth) * radius);
+    search.refine(distinct, scales.rmls_tolerance, degree, p);
   std::vector<const Rmls_surface*> kept;
   for(const Rmls_surface* s : distinct)
     if(s->members.size() >= C::min_surface_points)
