@@ -152,6 +152,7 @@ int main(int argc, char** argv)
 
       const CGAL::Sharp_feature_timings& t = result.timings;
       line.add("completed", completed)
+          .add("time_context", t.context)
           .add("time_candidates", t.candidates)
           .add("time_projection", t.projection)
           .add("time_smoothing", t.smoothing)

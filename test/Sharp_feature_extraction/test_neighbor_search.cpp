@@ -162,7 +162,7 @@ TEST_CASE("surfaces found around one candidate serve a neighbour only where they
     sfe::Local_frame frame;
     sfe::Vec3 spread;
     REQUIRE(sfe::principal_frame(points, s.members, frame, spread));
-    REQUIRE(s.fit.fit(points, s.members, frame, 1));
+    REQUIRE(s.height_field.fit(points, s.members, frame, 1));
   }
   const std::vector<const sfe::Rmls_surface*> surfaces = {&found[0], &found[1]};
   const double tolerance = 0.01;

@@ -358,6 +358,51 @@ TEST_CASE("the stage functions one after the other give the same result as extra
     CHECK(all.network.polylines[c].points == s.completed.polylines[c].points);
 }
 
+TEST_CASE("the extraction context: its scales are estimate_sharp_feature_scales(), its stages those of the free functions",
+          "[stages][context]")
+{
+  namespace sfe_np = CGAL::Sharp_feature_extraction::parameters;
+  const std::vector<Point_3> points = to_points<Point_3>(sample(unit_cube(), number_of_points, noisy));
+  const CGAL::Sharp_feature_extraction_context<K, CGAL::Parallel_if_available_tag> context(points);
+  const CGAL::Sharp_feature_scales<double> estimated =
+    CGAL::estimate_sharp_feature_scales<CGAL::Parallel_if_available_tag>(points);
+  CHECK(context.scales().spacing == estimated.spacing);
+  CHECK(context.scales().noise == estimated.noise);
+  CHECK(context.scales().rmls_tolerance == estimated.rmls_tolerance);
+  CHECK(context.scales().growth_radius == estimated.growth_radius);
+  CHECK(context.number_of_points() == points.size());
+
+  CGAL::Sharp_features<K> from_context, from_function;
+  REQUIRE(context.extract_sharp_features(from_context));
+  REQUIRE(CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(points, from_function));
+  CHECK(from_context.network.scales.spacing == estimated.spacing);
+  REQUIRE(from_context.network.polylines.size() == from_function.network.polylines.size());
+  for(std::size_t c = 0; c < from_context.network.polylines.size(); ++c)
+    CHECK(from_context.network.polylines[c].points == from_function.network.polylines[c].points);
+
+  // A stage's own scale given to its free function is the one it runs with (stage 2 used to
+  // read its scales from the candidates only and to ignore rmls_tolerance).
+  const double tolerance = 3 * estimated.rmls_tolerance;
+  CGAL::Feature_point_set<K> given, edited, by_default;
+  REQUIRE(CGAL::rmls_project_candidates<CGAL::Parallel_if_available_tag>(points, from_context.candidates, given,
+                                                                         sfe_np::rmls_tolerance(tolerance)));
+  CHECK(given.scales.rmls_tolerance == tolerance);
+  CGAL::Candidate_points<K> candidates = from_context.candidates;
+  candidates.scales.rmls_tolerance = tolerance;
+  REQUIRE(context.rmls_project_candidates(candidates, edited));
+  REQUIRE(context.rmls_project_candidates(from_context.candidates, by_default));
+  REQUIRE(given.edge_points.size() == edited.edge_points.size());
+  for(std::size_t i = 0; i < given.edge_points.size(); ++i)
+    CHECK(given.edge_points[i].point == edited.edge_points[i].point);
+  CHECK(by_default.edge_points.size() == from_context.projected.edge_points.size());
+  CHECK(given.edge_points.size() != by_default.edge_points.size());
+
+  CGAL::Feature_curve_network<K> grown;
+  const double radius = 2 * estimated.growth_radius;
+  REQUIRE(CGAL::grow_feature_polylines(from_context.smoothed, grown, sfe_np::growth_radius(radius)));
+  CHECK(grown.scales.growth_radius == radius);
+}
+
 TEST_CASE("stage 5: completion bridges a gap cut out of a straight crease into one curve", "[stages][completion]")
 {
   CGAL::Feature_curve_network<K> net = synthetic_network();

@@ -5,8 +5,10 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_COMPLETE_FEATURE_POLYLINES_H
 
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 #include <CGAL/Sharp_feature_extraction/internal/completion_impl.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+
 
 namespace CGAL {
 
@@ -45,13 +47,14 @@ void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
                                 const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  const sfe::Settings settings = sfe::read_settings(np);
-  sfe::Scales scales = sfe::to_internal(network.scales);
-  if(settings.completion_distance > 0)
-    scales.completion_distance = settings.completion_distance;
-  sfe::Curve_network internal_network = sfe::to_internal(network);
-  sfe::complete_polylines(internal_network, scales, settings);
-  network = sfe::to_public<GeomTraits>(internal_network, scales);
+  namespace own_np = Sharp_feature_extraction::internal_np;
+  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                                   own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::growth_radius_t,
+                                   CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
+                                   CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
+                                   CGAL::internal_np::callback_t>(),
+                "complete_feature_polylines: a parameter of another stage");
+  sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np));
 }
 
 } // namespace CGAL

@@ -4,9 +4,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_COMPUTE_CANDIDATE_POINTS_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_COMPUTE_CANDIDATE_POINTS_H
 
-#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+#include <CGAL/Sharp_feature_extraction/Sharp_feature_extraction_context.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 namespace CGAL {
@@ -19,12 +17,10 @@ namespace CGAL {
 /// from a neighbour to the jet. Points with r(p) above the threshold tau (default: the mean
 /// residual, as in the paper) are candidates. Outliers also score high; stage 2 rejects them.
 ///
-/// This stage also derives every scale of the pipeline from the data (see `Sharp_feature_scales`):
-/// the spacing s (mean distance to the 6th neighbour), the noise (median RMS residual of 36-point
-/// jets), the neighbourhood sizes (36 points, grown quadratically with noise/s above 0.25, at
-/// most 400; stage 2 uses twice as many), the RMLS tolerance (2.25 x noise, at least 0.05 s), the
-/// corner radius (median radius of a stage-2 neighbourhood), the growth radius (median radius of
-/// a stage-1 neighbourhood) and the completion distance (max(7 s, 3 x growth radius)).
+/// The scales come from the extraction context built on `points` (see
+/// `estimate_sharp_feature_scales()`); `candidates.scales` carries them, with the threshold, to
+/// the later stages. To run several stages on the same points without indexing them again,
+/// use a `Sharp_feature_extraction_context`.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`.
 /// \tparam PointRange a model of `ConstRange` whose value type is the key of `point_map`.
@@ -41,14 +37,8 @@ namespace CGAL {
 ///   \cgalParamNBegin{threshold_distance} the residual threshold tau (a distance); default: the mean residual of the points whose residual is at most their neighbourhood's radius (larger ones come from outliers). \cgalParamNEnd
 ///   \cgalParamNBegin{callback} a `std::function<bool(double)>` called with the progress in [0,1];
 ///     returning `false` stops the computation. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors} stage-1 neighbourhood size; default: derived. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors} stage-2 neighbourhood size; default: twice the stage-1 size. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance} RMLS tolerance (a distance); default: derived. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius} corner grouping radius; default: derived. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius} polyline growing radius; default: derived. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance} largest gap bridged by completion; default: derived.
-///     These five only set the scales stored in `candidates.scales` for the later stages
-///     (see `Sharp_feature_scales`). \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors} stage-1 neighbourhood size;
+///     default: derived (see `estimate_sharp_feature_scales()`). \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns `false` if the callback interrupted the computation (then `candidates` is incomplete).
@@ -61,15 +51,15 @@ bool compute_candidate_points(
   const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
+  namespace own_np = Sharp_feature_extraction::internal_np;
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  const sfe::Settings settings = sfe::read_settings(np);
-  sfe::Indexed_input input;
-  sfe::index_input_points<ConcurrencyTag>(points, np, input);
-  sfe::Candidate_output out;
-  const bool completed = sfe::compute_candidates<ConcurrencyTag>(input, settings,
-                                                                 sfe::Progress(settings.callback), out);
-  candidates = sfe::to_public<GT>(input, out);
-  return completed;
+  static_assert(sfe::holds_none_of<NamedParameters, own_np::rmls_neighbors_t, own_np::rmls_tolerance_t,
+                                   own_np::corner_radius_t, own_np::growth_radius_t, own_np::completion_distance_t,
+                                   CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
+                                   CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+                "compute_candidate_points: a parameter of another stage");
+  const Sharp_feature_extraction_context<GT, ConcurrencyTag> context(points, np);
+  return context.compute_candidate_points(candidates);
 }
 
 } // namespace CGAL

@@ -5,8 +5,10 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_GROW_FEATURE_POLYLINES_H
 
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+#include <CGAL/Sharp_feature_extraction/parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 #include <CGAL/Sharp_feature_extraction/internal/polyline_growing_impl.h>
+
 
 namespace CGAL {
 
@@ -31,16 +33,14 @@ bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features,
                             const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  const sfe::Settings settings = sfe::read_settings(np);
-  sfe::Scales scales = sfe::to_internal(features.scales);
-  if(settings.growth_radius > 0)
-    scales.growth_radius = settings.growth_radius;
-  sfe::Progress progress(settings.callback);
-  const sfe::Curve_network grown = sfe::grow_polylines(sfe::to_internal(features), scales.growth_radius, progress);
-  if(progress.cancelled())
-    return false;
-  network = sfe::to_public<GeomTraits>(grown, scales);
-  return true;
+  namespace own_np = Sharp_feature_extraction::internal_np;
+  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                                   own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::completion_distance_t,
+                                   CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
+                                   CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
+                                   CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+                "grow_feature_polylines: a parameter of another stage");
+  return sfe::grow_feature_curve_network(features, network, np, sfe::read_callback(np));
 }
 
 } // namespace CGAL

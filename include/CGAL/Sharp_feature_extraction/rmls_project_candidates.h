@@ -4,9 +4,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_RMLS_PROJECT_CANDIDATES_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_RMLS_PROJECT_CANDIDATES_H
 
-#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
-#include <CGAL/Sharp_feature_extraction/internal/rmls_projection_impl.h>
+#include <CGAL/Sharp_feature_extraction/Sharp_feature_extraction_context.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 namespace CGAL {
@@ -37,7 +35,8 @@ namespace CGAL {
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which
 ///   rank the candidates of a cell; without one residual per point, they rank by index) and
-///   scales are used.
+///   scales are used. The points are indexed again, with these scales: to run several stages
+///   on the same points, use a `Sharp_feature_extraction_context`.
 /// \param projected receives the edge and corner points.
 /// \param np optional named parameters: `point_map`, `geom_traits`, `callback` as in
 ///   `compute_candidate_points()`, and
@@ -45,8 +44,16 @@ namespace CGAL {
 ///   \cgalParamNBegin{degree_fitting} degree of the surface fits (1 or 2); default: 2. \cgalParamNEnd
 ///   \cgalParamNBegin{sharpness_angle} smallest angle, in degrees, between the normals of two
 ///     surfaces that meet at a sharp feature; default: 25. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors} stage-2 neighbourhood
+///     size; default: `candidates.scales.rmls_neighbors`. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance} RMLS tolerance (a
+///     distance); default: `candidates.scales.rmls_tolerance`. \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius} corner grouping radius;
+///     default: `candidates.scales.corner_radius`. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation.
+/// \throws std::invalid_argument if a coordinate is not finite, a candidate index is out of the
+///   range of the points or a parameter is out of range.
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
 bool rmls_project_candidates(
@@ -56,20 +63,15 @@ bool rmls_project_candidates(
   const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
+  namespace own_np = Sharp_feature_extraction::internal_np;
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  const sfe::Settings settings = sfe::read_settings(np);
-  sfe::Indexed_input input;
-  sfe::index_input_points<ConcurrencyTag>(points, np, input);
-  for(std::size_t i : candidates.indices)
-    if(i >= input.input_size())
-      throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
-  const sfe::Scales scales = sfe::to_internal(candidates.scales);
-  sfe::Feature_samples out;
-  const bool completed = sfe::rmls_project<ConcurrencyTag>(input, input.positions(candidates.indices),
-                                                           input.in_spatial_order(candidates.residuals), scales,
-                                                           settings, sfe::Progress(settings.callback), out);
-  projected = sfe::to_public<GT>(out, scales);
-  return completed;
+  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::growth_radius_t,
+                                   own_np::completion_distance_t, CGAL::internal_np::threshold_distance_t,
+                                   CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                   CGAL::internal_np::number_of_relaxation_steps_t>(),
+                "rmls_project_candidates: a parameter of another stage");
+  const Sharp_feature_extraction_context<GT, ConcurrencyTag> context(points, candidates.scales, np);
+  return context.rmls_project_candidates(candidates, projected, np);
 }
 
 } // namespace CGAL

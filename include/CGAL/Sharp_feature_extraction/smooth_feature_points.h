@@ -5,8 +5,10 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_SMOOTH_FEATURE_POINTS_H
 
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
+#include <CGAL/Sharp_feature_extraction/parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 #include <CGAL/Sharp_feature_extraction/internal/smoothing_impl.h>
+
 
 namespace CGAL {
 
@@ -34,12 +36,12 @@ bool smooth_feature_points(Feature_point_set<GeomTraits>& features,
                            const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  const sfe::Settings settings = sfe::read_settings(np);
-  sfe::Feature_samples samples = sfe::to_internal(features);
-  if(!sfe::smooth_edge_points<ConcurrencyTag>(samples, settings, sfe::Progress(settings.callback)))
-    return false;
-  features = sfe::to_public<GeomTraits>(samples, sfe::to_internal(features.scales));
-  return true;
+  static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                                   CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                   CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+                "smooth_feature_points: a parameter of another stage");
+  return sfe::smooth_feature_point_set<ConcurrencyTag>(features, sfe::read_smoothing_parameters(np),
+                                                       sfe::read_callback(np));
 }
 
 } // namespace CGAL

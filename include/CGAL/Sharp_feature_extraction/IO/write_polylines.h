@@ -4,6 +4,8 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_IO_WRITE_POLYLINES_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_IO_WRITE_POLYLINES_H
 
+#include <CGAL/number_utils.h>
+
 #include <fstream>
 #include <iomanip>
 #include <limits>

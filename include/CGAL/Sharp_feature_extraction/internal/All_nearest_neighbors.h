@@ -49,6 +49,103 @@ struct Grid_key
   static std::uint64_t z(std::uint64_t key) { return key & mask; }
 };
 
+/// The points of a set sorted by the cubic cells of a grid (side `cell`, origin `low`): the
+/// cells in ascending key order, each with its points in ascending order.
+class Cell_grid
+{
+public:
+  Cell_grid(const std::vector<Vec3>& points, const Vec3& low, double cell) : m_low(low), m_cell(cell)
+  {
+    const std::size_t n = points.size();
+    m_keyed.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      m_keyed[i] = std::make_pair(Grid_key::of(points[i], low, cell), i);
+    std::sort(m_keyed.begin(), m_keyed.end());
+    for(std::size_t i = 0; i < n; ++i)
+      if(i == 0 || m_keyed[i].first != m_keyed[i - 1].first)
+      {
+        m_cell_key.push_back(m_keyed[i].first);
+        m_cell_start.push_back(i);
+      }
+    m_cell_start.push_back(n);
+  }
+
+  std::size_t number_of_cells() const { return m_cell_key.size(); }
+
+  /// The points of cell `c`: `point(c, j)` for `j` from 0 to `size(c)`.
+  std::size_t size(std::size_t c) const { return m_cell_start[c + 1] - m_cell_start[c]; }
+  std::size_t point(std::size_t c, std::size_t j) const { return m_keyed[m_cell_start[c] + j].second; }
+
+  /// The points of the 27 cells around cell `c` (itself included), appended to `out` (cleared).
+  void points_around(std::size_t c, std::vector<std::size_t>& out) const
+  {
+    const std::uint64_t x = Grid_key::x(m_cell_key[c]), y = Grid_key::y(m_cell_key[c]), z = Grid_key::z(m_cell_key[c]);
+    out.clear();
+    for(std::uint64_t dx = x - 1; dx <= x + 1; ++dx)
+      for(std::uint64_t dy = y - 1; dy <= y + 1; ++dy)
+      {
+        // The three cells along z are consecutive keys.
+        const auto from = std::lower_bound(m_cell_key.begin(), m_cell_key.end(), Grid_key::pack(dx, dy, z - 1));
+        for(auto it = from; it != m_cell_key.end() && *it <= Grid_key::pack(dx, dy, z + 1); ++it)
+        {
+          const std::size_t d = std::size_t(it - m_cell_key.begin());
+          for(std::size_t j = m_cell_start[d]; j < m_cell_start[d + 1]; ++j)
+            out.push_back(m_keyed[j].second);
+        }
+      }
+  }
+
+  /// The lowest corner of the box of the 27 cells around cell `c`.
+  Vec3 low_corner_around(std::size_t c) const
+  {
+    const std::uint64_t key = m_cell_key[c];
+    // Keys are offset by one cell (see `Grid_key`).
+    return m_low + m_cell * Vec3(double(Grid_key::x(key)) - 2, double(Grid_key::y(key)) - 2, double(Grid_key::z(key)) - 2);
+  }
+
+private:
+  Vec3 m_low;
+  double m_cell;
+  std::vector<std::pair<std::uint64_t, std::size_t>> m_keyed;
+  std::vector<std::uint64_t> m_cell_key;
+  std::vector<std::size_t> m_cell_start;
+};
+
+/// The `k` nearest of `candidates` to `p` (in `neighbors`, in no particular order), if they
+/// all lie within `margin` of `p` (then no point outside the candidates' box is closer); false
+/// otherwise. `previous` is the squared k-th distance of the point answered before (0 if
+/// none): the candidates within `neighborhood_guess_factor` of it are ranked first, and it is
+/// updated on success.
+inline bool nearest_among(const std::vector<Vec3>& points, const Vec3& p, const std::vector<std::size_t>& candidates,
+                          std::size_t k, double margin, double& previous,
+                          std::vector<std::pair<double, std::size_t>>& ranked, std::vector<std::size_t>& neighbors)
+{
+  const double margin2 = margin * margin;
+  const double guess2 = previous > 0 ? (std::min)(margin2, neighborhood_guess_factor * previous) : margin2;
+  for(double bound2 : {guess2, margin2})
+  {
+    ranked.clear();
+    for(std::size_t q : candidates)
+    {
+      const double d2 = (points[q] - p).squaredNorm();
+      if(d2 <= bound2)
+        ranked.emplace_back(d2, q);
+    }
+    if(ranked.size() >= k)
+    {
+      std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
+      previous = ranked[k - 1].first;
+      neighbors.clear();
+      for(std::size_t r = 0; r < k; ++r)
+        neighbors.push_back(ranked[r].second);
+      return true;
+    }
+    if(bound2 == margin2)
+      break;
+  }
+  return false;
+}
+
 /// Calls `body(i, neighbors)` for every point `i` of `points` with its `k` nearest points of
 /// `points` (`i` included, in no particular order); `index` must index `points`. The points
 /// are put in cubic cells of side `cell`, about as wide as a neighbourhood (see
@@ -87,79 +184,25 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
     });
   }
 
-  // Points by cell (cell keys ascending, then positions).
-  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(n);
-  for(std::size_t i = 0; i < n; ++i)
-    keyed[i] = std::make_pair(Grid_key::of(points[i], low, cell), i);
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<std::uint64_t> cell_key;
-  std::vector<std::size_t> cell_start;
-  for(std::size_t i = 0; i < n; ++i)
-    if(i == 0 || keyed[i].first != keyed[i - 1].first)
-    {
-      cell_key.push_back(keyed[i].first);
-      cell_start.push_back(i);
-    }
-  cell_start.push_back(n);
-
-  return parallel_blocks<ConcurrencyTag>(cell_key.size(), progress, [&](std::size_t first, std::size_t last) {
+  const Cell_grid grid(points, low, cell);
+  return parallel_blocks<ConcurrencyTag>(grid.number_of_cells(), progress, [&](std::size_t first, std::size_t last) {
     std::vector<std::size_t> candidates, neighbors;
     std::vector<std::pair<double, std::size_t>> ranked;
     for(std::size_t c = first; c < last; ++c)
     {
-      // The candidates: the points of the 27 cells around cell c.
-      const std::uint64_t x = Grid_key::x(cell_key[c]), y = Grid_key::y(cell_key[c]), z = Grid_key::z(cell_key[c]);
-      candidates.clear();
-      for(std::uint64_t dx = x - 1; dx <= x + 1; ++dx)
-        for(std::uint64_t dy = y - 1; dy <= y + 1; ++dy)
-        {
-          // The three cells along z are consecutive keys.
-          const auto from = std::lower_bound(cell_key.begin(), cell_key.end(), Grid_key::pack(dx, dy, z - 1));
-          for(auto it = from; it != cell_key.end() && *it <= Grid_key::pack(dx, dy, z + 1); ++it)
-          {
-            const std::size_t d = std::size_t(it - cell_key.begin());
-            for(std::size_t j = cell_start[d]; j < cell_start[d + 1]; ++j)
-              candidates.push_back(keyed[j].second);
-          }
-        }
-      // The box of the 27 cells.
-      const Vec3 box_low = low + cell * Vec3(double(x) - 2, double(y) - 2, double(z) - 2);
+      grid.points_around(c, candidates);
+      const Vec3 box_low = grid.low_corner_around(c);
       const Vec3 box_high = box_low + Vec3::Constant(3 * cell);
       // The previous point's k-th distance: the next one's is about the same, and only the
       // candidates within a little more need ranking. Reset per cell, so that the result does
       // not depend on how cells are shared between threads.
       double previous = 0;
-      for(std::size_t j = cell_start[c]; j < cell_start[c + 1]; ++j)
+      for(std::size_t j = 0; j < grid.size(c); ++j)
       {
-        const std::size_t i = keyed[j].second;
+        const std::size_t i = grid.point(c, j);
         const Vec3& p = points[i];
         const double margin = (std::min)((p - box_low).minCoeff(), (box_high - p).minCoeff());
-        // Neighbourhoods within `margin` are exact: no point outside the 27 cells is closer.
-        const double margin2 = margin * margin;
-        const double guess2 = previous > 0 ? (std::min)(margin2, neighborhood_guess_factor * previous) : margin2;
-        bool exact = false;
-        for(double bound2 : {guess2, margin2})
-        {
-          ranked.clear();
-          for(std::size_t q : candidates)
-          {
-            const double d2 = (points[q] - p).squaredNorm();
-            if(d2 <= bound2)
-              ranked.emplace_back(d2, q);
-          }
-          exact = ranked.size() >= k;
-          if(exact || bound2 == margin2)
-            break;
-        }
-        if(exact)
-        {
-          std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
-          previous = ranked[k - 1].first;
-          neighbors.clear();
-          for(std::size_t r = 0; r < k; ++r)
-            neighbors.push_back(ranked[r].second);
-        }
-        else
+        if(!nearest_among(points, p, candidates, k, margin, previous, ranked, neighbors))
           index.nearest(p, k, neighbors, false);
         body(i, neighbors);
       }

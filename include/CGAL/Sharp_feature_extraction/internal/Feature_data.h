@@ -22,47 +22,57 @@ constexpr std::size_t no_index = (std::numeric_limits<std::size_t>::max)();
 constexpr double pi = 3.14159265358979323846;
 inline double radians(double degrees) { return degrees * pi / 180.; }
 
-/// The pipeline's working copies of the public result types, in double precision.
-struct Edge_sample
+/// Noise-to-spacing ratio above which the surfaces of stage 2 are planes: a quadric fitted to
+/// noisy points bends towards the other side of a crease.
+constexpr double noise_ratio_for_planes = 0.05;
+
+/// Whether the noise dominates the sampling (see `noise_ratio_for_planes`).
+inline bool noise_dominates(const Scales& scales)
 {
-  Vec3 point;
-  std::array<Vec3, 2> normals;
-  std::size_t source = 0;
+  return scales.noise > noise_ratio_for_planes * scales.spacing;
+}
+
+/// The traits the stages compute with: double precision, with Eigen vectors for points and
+/// normals. The stages work on the public result types (`Edge_point`, `Feature_polyline`, ...)
+/// instantiated with these traits; the public functions give them to the user in the user's
+/// kernel (see `Kernel_conversion.h`).
+struct Working_traits
+{
+  typedef double FT;
+  typedef Vec3 Point_3;
+  typedef Vec3 Vector_3;
 };
 
-struct Corner_sample
-{
-  Vec3 point;
-  std::array<Vec3, 3> normals;
-  double weight = 0;
-  std::size_t source = 0;
-};
+typedef Edge_point<Working_traits> Working_edge_point;
+typedef Corner_point<Working_traits> Working_corner_point;
+typedef Feature_point_set<Working_traits> Working_feature_points;
+typedef Feature_polyline<Working_traits> Working_polyline;
+typedef Feature_corner<Working_traits> Working_corner;
+typedef Feature_curve_network<Working_traits> Working_network;
 
-struct Feature_samples
+/// Whether `curve` is a loop that passes through no corner: it has no ends at all. (A loop
+/// through a corner starts and ends there: completion treats its two ends like any others.)
+inline bool is_loop_without_corner(const Working_polyline& curve)
 {
-  std::vector<Edge_sample> edges;
-  std::vector<Corner_sample> corners;
-};
+  return curve.is_closed() && curve.front_corner == no_index;
+}
 
-struct Curve
+/// Fills `Feature_corner::incident_polylines` from the curves' corner indices (the stages
+/// renumber curves and corners freely and index the incidences once, at their end).
+template <typename GT>
+void index_incident_polylines(Feature_curve_network<GT>& network)
 {
-  std::vector<Vec3> points;
-  std::vector<std::array<Vec3, 2>> normals;
-  std::size_t front_corner = no_index, back_corner = no_index;
-  bool closed = false;
-};
-
-struct Corner_node
-{
-  Vec3 point;
-  std::vector<Vec3> normals;
-};
-
-struct Curve_network
-{
-  std::vector<Curve> curves;
-  std::vector<Corner_node> corners;
-};
+  for(Feature_corner<GT>& corner : network.corners)
+    corner.incident_polylines.clear();
+  for(std::size_t c = 0; c < network.polylines.size(); ++c)
+  {
+    const Feature_polyline<GT>& curve = network.polylines[c];
+    if(curve.front_corner != no_index)
+      network.corners[curve.front_corner].incident_polylines.push_back(c);
+    if(curve.back_corner != no_index && curve.back_corner != curve.front_corner)
+      network.corners[curve.back_corner].incident_polylines.push_back(c);
+  }
+}
 
 /// How the normal pair `b` matches the pair `a` up to order: 0 no match, 1 same order,
 /// 2 swapped. Two normals match when they are within `cos_tolerance`, orientation included:

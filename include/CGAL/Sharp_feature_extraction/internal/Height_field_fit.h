@@ -5,6 +5,7 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_HEIGHT_FIELD_FIT_H
 
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
 
 #include <Eigen/Dense>
 
@@ -23,38 +24,21 @@ struct Local_frame
   Vec3 origin = Vec3::Zero(), u = Vec3::UnitX(), v = Vec3::UnitY(), n = Vec3::UnitZ();
 };
 
-/// Principal component frame of `points[indices]`: n along the smallest eigenvalue.
-/// `spread` receives the eigenvalues (ascending) of the covariance divided by the count.
-/// Returns false for fewer than 3 points.
+/// Principal component frame of `points[indices]`: n along the smallest variance.
+/// `spread` receives the variances (ascending). Returns false for fewer than 3 points.
 template <typename IndexRange>
 bool principal_frame(const std::vector<Vec3>& points, const IndexRange& indices,
                      Local_frame& frame, Vec3& spread)
 {
-  // One pass: moments about the first point (close to all the others, so no cancellation).
-  std::size_t count = 0;
-  Vec3 first = Vec3::Zero(), sum = Vec3::Zero();
-  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero();
-  for(std::size_t i : indices)
-  {
-    if(count == 0)
-      first = points[i];
-    const Vec3 d = points[i] - first;
-    sum += d;
-    second_moment.noalias() += d * d.transpose();
-    ++count;
-  }
-  if(count < 3)
+  Principal_axes axes;
+  if(indices.size() < 3
+     || !compute_principal_axes(indices.size(), [&](std::size_t j) -> const Vec3& { return points[indices[j]]; }, axes))
     return false;
-  const Vec3 mean = sum / double(count);
-  const Eigen::Matrix3d covariance = second_moment / double(count) - mean * mean.transpose();
-  const Vec3 centroid = first + mean;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(covariance);
-  frame.origin = centroid;
-  frame.n = solver.eigenvectors().col(0).normalized();
-  frame.u = solver.eigenvectors().col(2).normalized();
+  frame.origin = axes.centroid;
+  frame.n = axes.axes.col(0);
+  frame.u = axes.axes.col(2);
   frame.v = frame.n.cross(frame.u).normalized();
-  spread = solver.eigenvalues().cwiseMax(0.);
+  spread = axes.variances;
   return true;
 }
 

@@ -4,6 +4,7 @@
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_POINT_INDEX_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_POINT_INDEX_H
 
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -12,8 +13,6 @@
 #include <CGAL/Kd_tree.h>
 #include <CGAL/property_map.h>
 
-#include <Eigen/Core>
-
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -21,8 +20,6 @@
 namespace CGAL {
 namespace Sharp_feature_extraction {
 namespace internal {
-
-typedef Eigen::Vector3d Vec3;
 
 /// k-nearest-neighbour and ball queries over a fixed set of points, answered with indices.
 /// Built once and shared by the stages that search the same set; const queries are thread-safe.

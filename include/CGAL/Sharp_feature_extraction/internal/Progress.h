@@ -60,9 +60,13 @@ private:
 template <typename ConcurrencyTag, typename Body>
 bool parallel_blocks(std::size_t n, Progress& progress, const Body& body)
 {
-  const std::size_t block_size = (std::max<std::size_t>)(64, n / 256 + 1);
+  // About `blocks_per_loop` blocks (enough to balance the threads; a block is a task), of
+  // at least `smallest_block` indices (so that a task outweighs its scheduling), run
+  // `blocks_per_round` at a time between two progress reports (often enough for a progress
+  // bar and a prompt cancel, rarely enough to keep the threads busy).
+  constexpr std::size_t smallest_block = 64, blocks_per_loop = 256, blocks_per_round = 16;
+  const std::size_t block_size = (std::max<std::size_t>)(smallest_block, n / blocks_per_loop + 1);
   const std::size_t blocks = (n + block_size - 1) / block_size;
-  const std::size_t blocks_per_round = 16;
   std::vector<std::size_t> round;
   for(std::size_t first_block = 0; first_block < blocks; first_block += blocks_per_round)
   {

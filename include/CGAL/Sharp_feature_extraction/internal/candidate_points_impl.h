@@ -7,12 +7,12 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CANDIDATE_POINTS_IMPL_H
 
 #include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
-#include <CGAL/Sharp_feature_extraction/internal/conversions.h>
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
+#include <CGAL/Sharp_feature_extraction/internal/Indexed_input.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
-#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,32 +31,26 @@ constexpr std::size_t base_candidate_neighbors = 36;
 constexpr std::size_t maximum_candidate_neighbors = 400;
 /// Noise-to-spacing ratio above which neighbourhoods grow (quadratically with the ratio).
 constexpr double noise_ratio_for_growth = 0.25;
-/// Noise-to-spacing ratio above which the surfaces of stage 2 are planes: a quadric fitted to
-/// noisy points bends towards the other side of a crease.
-constexpr double noise_ratio_for_planes = 0.05;
 /// RMLS tolerance relative to the noise scale (the RMS residual underestimates the noise a little:
 /// 2.25 of it covers uniform noise in a ball, whose normal component reaches 2.2 of its RMS).
 constexpr double rmls_tolerance_per_noise = 2.25;
 /// Smallest RMLS tolerance, relative to the spacing, for noise-free data.
 constexpr double rmls_tolerance_per_spacing = 0.05;
-/// Spacing is the mean distance to this neighbour (CGAL's compute_average_spacing convention).
+/// Spacing is the mean distance to this neighbour (see `Sharp_feature_scales::spacing`).
 constexpr std::size_t spacing_neighbor = 6;
 /// At most this many points are used to estimate spacing, noise and neighbourhood radii.
 constexpr std::size_t scale_sample_size = 20000;
-
-/// Whether the noise dominates the sampling (see `noise_ratio_for_planes`).
-inline bool noise_dominates(const Scales& scales)
-{
-  return scales.noise > noise_ratio_for_planes * scales.spacing;
-}
-
-/// Stage-1 results, indexed like `Indexed_input::points` (spatial order).
-struct Candidate_output
-{
-  std::vector<double> residuals;
-  std::vector<std::size_t> candidates; // ascending positions
-  Scales scales;
-};
+/// Smallest neighbourhood size: a quadric jet has 6 coefficients, and a fit needs more points.
+constexpr std::size_t minimum_neighbors = 7;
+/// Stage-2 neighbourhoods hold this many times the points of stage-1 ones: the forward search
+/// splits them into two or three surfaces, each of which needs about a stage-1 neighbourhood.
+constexpr std::size_t rmls_neighbors_per_candidate_neighbors = 2;
+/// Completion bridges gaps up to this many spacings (gaps of a few missing samples along a
+/// crease, from the paper's examples)...
+constexpr double completion_distance_per_spacing = 7;
+/// ... and at least this many growth radii: stage 4 stops where the next edge point is more
+/// than a growth radius away, so gaps are at least that wide.
+constexpr double completion_distance_per_growth_radius = 3;
 
 struct Local_fit_statistics
 {
@@ -98,74 +92,117 @@ inline double median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
-/// Spacing, noise and neighbourhood sizes from a regular subsample of the cloud (regular in
-/// the spatial order of `points`), then the user's overrides. `candidate_radius` receives the
-/// median distance to the `scales.candidate_neighbors`-th neighbour (the default growth
-/// radius, whatever the user's). Returns false when the cloud has no extent (all points
-/// identical) or when cancelled (then `progress` is cancelled).
+/// The measurements of the regular subsample (regular in the spatial order of the points)
+/// from which the scales are derived, one value per sample.
+struct Scale_samples
+{
+  std::size_t stride = 1;
+  /// Distance to the `spacing_neighbor`-th neighbour.
+  std::vector<double> spacing;
+  /// RMS residual of the jet fitted to the `base_candidate_neighbors` nearest points.
+  std::vector<double> rms_residual;
+  /// Distances to the `candidate_neighbors`-th and `rmls_neighbors`-th neighbours.
+  std::vector<double> candidate_radius, rmls_radius;
+};
+
+/// First pass over the samples: spacing, noise, and the neighbourhood radii of the default
+/// sizes on data without noise (`base_candidate_neighbors` and twice as many), which then need
+/// no second pass. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
-                   const Settings& settings, Progress progress, Scales& scales, double& candidate_radius)
+bool measure_samples(const std::vector<Vec3>& points, const Point_index& index, int degree, Progress progress,
+                     Scale_samples& samples)
 {
   const std::size_t n = points.size();
-  const std::size_t stride = (std::max<std::size_t>)(1, n / scale_sample_size);
-  const std::size_t samples = (n + stride - 1) / stride;
-  const std::size_t k0 = (std::min)(base_candidate_neighbors, n);
-  // The first pass also searches 2 k0 neighbours: the radii of the default neighbourhood sizes
-  // on data without noise, which then need no second pass.
-  const std::size_t k_first = (std::min)(2 * base_candidate_neighbors, n);
-  std::vector<double> spacing(samples), rms(samples), r1(samples), r2(samples);
-  Progress first_half = progress.sub(0, 0.5), second_half = progress.sub(0.5, 1);
-  if(!parallel_blocks<ConcurrencyTag>(samples, first_half, [&](std::size_t first, std::size_t last) {
-       std::vector<std::size_t> neighbors;
-       for(std::size_t s = first; s < last; ++s)
-       {
-         const Vec3& p = points[s * stride];
-         index.nearest(p, k_first, neighbors);
-         spacing[s] = (points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - p).norm();
-         r1[s] = (points[neighbors[k0 - 1]] - p).norm();
-         r2[s] = (points[neighbors.back()] - p).norm();
-         neighbors.resize(k0);
-         rms[s] = fit_residuals(points, neighbors, settings.degree_fitting).rms_residual;
-       }
-     }))
-    return false;
-  scales.spacing = std::accumulate(spacing.begin(), spacing.end(), 0.) / double(spacing.size());
-  if(!(scales.spacing > 0))
-    return false;
-  scales.noise = median(rms);
+  samples.stride = (std::max<std::size_t>)(1, n / scale_sample_size);
+  const std::size_t count = (n + samples.stride - 1) / samples.stride;
+  for(std::vector<double>* v : {&samples.spacing, &samples.rms_residual, &samples.candidate_radius, &samples.rmls_radius})
+    v->assign(count, 0.);
+  const std::size_t fit_size = (std::min)(base_candidate_neighbors, n);
+  const std::size_t searched = (std::min)(rmls_neighbors_per_candidate_neighbors * base_candidate_neighbors, n);
+  return parallel_blocks<ConcurrencyTag>(count, progress, [&](std::size_t first, std::size_t last) {
+    std::vector<std::size_t> neighbors;
+    for(std::size_t s = first; s < last; ++s)
+    {
+      const Vec3& p = points[s * samples.stride];
+      index.nearest(p, searched, neighbors);
+      samples.spacing[s] = (points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - p).norm();
+      samples.candidate_radius[s] = (points[neighbors[fit_size - 1]] - p).norm();
+      samples.rmls_radius[s] = (points[neighbors.back()] - p).norm();
+      neighbors.resize(fit_size);
+      samples.rms_residual[s] = fit_residuals(points, neighbors, degree).rms_residual;
+    }
+  });
+}
 
+/// Second pass, when the neighbourhood sizes are not those of the first: their radii. Returns
+/// false if cancelled.
+template <typename ConcurrencyTag>
+bool measure_radii(const std::vector<Vec3>& points, const Point_index& index, const Scales& scales,
+                   Progress progress, Scale_samples& samples)
+{
+  return parallel_blocks<ConcurrencyTag>(samples.spacing.size(), progress, [&](std::size_t first, std::size_t last) {
+    std::vector<std::size_t> neighbors;
+    for(std::size_t s = first; s < last; ++s)
+    {
+      const Vec3& p = points[s * samples.stride];
+      index.nearest(p, scales.rmls_neighbors, neighbors);
+      samples.candidate_radius[s] = (points[neighbors[(std::min)(scales.candidate_neighbors, neighbors.size()) - 1]] - p).norm();
+      samples.rmls_radius[s] = (points[neighbors.back()] - p).norm();
+    }
+  });
+}
+
+/// The neighbourhood sizes: grown with the square of the noise-to-spacing ratio (above
+/// `noise_ratio_for_growth`) so that fits average the noise out, or as given; within
+/// [`minimum_neighbors`, n].
+inline void choose_neighborhood_sizes(const Scale_parameters& parameters, std::size_t n, Scales& scales)
+{
   const double noise_ratio = scales.noise / scales.spacing;
   const double growth = (std::max)(1., std::pow(noise_ratio / noise_ratio_for_growth, 2));
-  scales.candidate_neighbors = settings.candidate_neighbors > 0
-    ? settings.candidate_neighbors
-    : (std::min)(maximum_candidate_neighbors, std::size_t(double(base_candidate_neighbors) * growth));
-  scales.candidate_neighbors = (std::max<std::size_t>)(7, (std::min)(scales.candidate_neighbors, n));
-  scales.rmls_neighbors = settings.rmls_neighbors > 0 ? settings.rmls_neighbors : 2 * scales.candidate_neighbors;
-  scales.rmls_neighbors = (std::max<std::size_t>)(7, (std::min)(scales.rmls_neighbors, n));
+  auto within_bounds = [n](std::size_t k) { return (std::max<std::size_t>)(minimum_neighbors, (std::min)(k, n)); };
+  scales.candidate_neighbors = within_bounds(parameters.candidate_neighbors > 0
+    ? parameters.candidate_neighbors
+    : (std::min)(maximum_candidate_neighbors, std::size_t(double(base_candidate_neighbors) * growth)));
+  scales.rmls_neighbors = within_bounds(parameters.rmls_neighbors > 0
+    ? parameters.rmls_neighbors : rmls_neighbors_per_candidate_neighbors * scales.candidate_neighbors);
+}
 
-  // Neighbourhood radii: the median distance to the k-th neighbour.
-  if((scales.candidate_neighbors != k0 || scales.rmls_neighbors != k_first)
-     && !parallel_blocks<ConcurrencyTag>(samples, second_half, [&](std::size_t first, std::size_t last) {
-          std::vector<std::size_t> neighbors;
-          for(std::size_t s = first; s < last; ++s)
-          {
-            const Vec3& p = points[s * stride];
-            index.nearest(p, scales.rmls_neighbors, neighbors);
-            r1[s] = (points[neighbors[(std::min)(scales.candidate_neighbors, neighbors.size()) - 1]] - p).norm();
-            r2[s] = (points[neighbors.back()] - p).norm();
-          }
-        }))
-    return false;
+/// The distances derived from the spacing, the noise and the neighbourhood radii, or as given.
+inline void choose_distances(const Scale_parameters& parameters, const Scale_samples& samples, Scales& scales)
+{
   // The RMLS tolerance must admit the noise but never fall to 0 on exact data.
-  scales.rmls_tolerance = settings.rmls_tolerance > 0
-    ? settings.rmls_tolerance
+  scales.rmls_tolerance = parameters.rmls_tolerance > 0
+    ? parameters.rmls_tolerance
     : (std::max)(rmls_tolerance_per_noise * scales.noise, rmls_tolerance_per_spacing * scales.spacing);
-  scales.corner_radius = settings.corner_radius > 0 ? settings.corner_radius : median(r2);
-  candidate_radius = median(r1);
-  scales.growth_radius = settings.growth_radius > 0 ? settings.growth_radius : candidate_radius;
-  scales.completion_distance = settings.completion_distance > 0
-    ? settings.completion_distance : (std::max)(7 * scales.spacing, 3 * scales.growth_radius);
+  scales.corner_radius = parameters.corner_radius > 0 ? parameters.corner_radius : median(samples.rmls_radius);
+  scales.candidate_radius = median(samples.candidate_radius);
+  scales.growth_radius = parameters.growth_radius > 0 ? parameters.growth_radius : scales.candidate_radius;
+  scales.completion_distance = parameters.completion_distance > 0
+    ? parameters.completion_distance
+    : (std::max)(completion_distance_per_spacing * scales.spacing,
+                 completion_distance_per_growth_radius * scales.growth_radius);
+}
+
+/// Spacing, noise, neighbourhood sizes and distances, from a regular subsample of the cloud,
+/// with the user's choices. Returns false when the cloud has no extent (all points identical)
+/// or when cancelled (then `progress` is cancelled).
+template <typename ConcurrencyTag>
+bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
+                   const Scale_parameters& parameters, Progress progress, Scales& scales)
+{
+  Scale_samples samples;
+  if(!measure_samples<ConcurrencyTag>(points, index, parameters.degree_fitting, progress.sub(0, 0.5), samples))
+    return false;
+  scales.spacing = std::accumulate(samples.spacing.begin(), samples.spacing.end(), 0.) / double(samples.spacing.size());
+  if(!(scales.spacing > 0))
+    return false;
+  scales.noise = median(samples.rms_residual);
+  choose_neighborhood_sizes(parameters, points.size(), scales);
+  const bool first_pass_radii = scales.candidate_neighbors == (std::min)(base_candidate_neighbors, points.size())
+    && scales.rmls_neighbors == (std::min)(rmls_neighbors_per_candidate_neighbors * base_candidate_neighbors, points.size());
+  if(!first_pass_radii && !measure_radii<ConcurrencyTag>(points, index, scales, progress.sub(0.5, 1), samples))
+    return false;
+  choose_distances(parameters, samples, scales);
   return true;
 }
 
@@ -190,36 +227,61 @@ inline double mean_residual_of_surface_fits(const std::vector<double>& residuals
   return count > 0 ? sum / double(count) : 0.;
 }
 
-/// Stage 1 on every point. Returns false if cancelled.
+/// The scales of `input` (see `Sharp_feature_scales`): all zero when the cloud has fewer than
+/// `minimum_number_of_points` distinct points or no extent. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool compute_candidates(const Indexed_input& input, const Settings& settings, Progress progress,
-                        Candidate_output& out)
+bool estimate_scales(const Indexed_input& input, const Scale_parameters& parameters, Progress progress,
+                     Scales& scales)
+{
+  scales = Scales();
+  if(input.points.size() >= minimum_number_of_points
+     && !derive_scales<ConcurrencyTag>(input.points, input.index, parameters, progress, scales))
+  {
+    if(progress.cancelled())
+      return false;
+    scales = Scales();
+  }
+  return progress.report(1.);
+}
+
+/// Stage-1 results in the spatial order of `Indexed_input::points`.
+struct Candidate_output
+{
+  /// The residual of every distinct point.
+  std::vector<double> residuals;
+  /// The positions of the candidates, ascending.
+  std::vector<std::size_t> candidates;
+  /// The scales, with the threshold used.
+  Scales scales;
+};
+
+/// Stage 1 on every point, with the scales of the extraction context. Returns false if
+/// cancelled.
+template <typename ConcurrencyTag>
+bool compute_candidates(const Indexed_input& input, const Scales& scales, const Candidate_parameters& parameters,
+                        Progress progress, Candidate_output& out)
 {
   const std::vector<Vec3>& points = input.points;
-  const Point_index& index = input.index;
   const std::size_t n = points.size();
   out = Candidate_output();
   out.residuals.assign(n, 0.);
-  Progress scale_progress = progress.sub(0, 0.05);
-  double candidate_radius = 0;
-  if(n < minimum_number_of_points
-     || !derive_scales<ConcurrencyTag>(points, index, settings, scale_progress, out.scales, candidate_radius))
-    return !scale_progress.cancelled() && progress.report(1.);
+  out.scales = scales;
+  if(!(scales.spacing > 0) || scales.candidate_neighbors == 0)
+    return progress.report(1.);
 
-  const std::size_t k = out.scales.candidate_neighbors;
-  const int degree = settings.degree_fitting;
+  const std::size_t k = scales.candidate_neighbors;
+  const int degree = parameters.degree_fitting;
   std::vector<double>& residuals = out.residuals;
-  Progress fit_progress = progress.sub(0.05, 1);
-  if(!for_each_neighborhood<ConcurrencyTag>(points, index, k, neighborhood_cell_per_radius * candidate_radius,
-                                            fit_progress,
+  if(!for_each_neighborhood<ConcurrencyTag>(points, input.index, k, neighborhood_cell_per_radius * scales.candidate_radius,
+                                            progress,
        [&](std::size_t i, const std::vector<std::size_t>& neighbors) {
          residuals[i] = fit_residuals(points, neighbors, degree).max_residual;
        }))
     return false;
 
-  out.scales.residual_threshold = settings.residual_threshold >= 0
-    ? settings.residual_threshold
-    : mean_residual_of_surface_fits(residuals, candidate_radius);
+  out.scales.residual_threshold = parameters.residual_threshold >= 0
+    ? parameters.residual_threshold
+    : mean_residual_of_surface_fits(residuals, scales.candidate_radius);
   for(std::size_t i = 0; i < n; ++i)
     if(residuals[i] > out.scales.residual_threshold)
       out.candidates.push_back(i);
@@ -228,12 +290,12 @@ bool compute_candidates(const Indexed_input& input, const Settings& settings, Pr
 
 /// The public form of `out`: residuals and candidate indices in input order.
 template <typename GT>
-Candidate_points<GT> to_public(const Indexed_input& input, const Candidate_output& out)
+Candidate_points<GT> to_input_order(const Indexed_input& input, const Candidate_output& out)
 {
   Candidate_points<GT> candidates;
   candidates.residuals = input.in_input_order<typename GT::FT>(out.residuals);
   candidates.indices = input.input_indices(out.candidates);
-  candidates.scales = to_public<typename GT::FT>(out.scales);
+  candidates.scales = convert_scales<typename GT::FT>(out.scales);
   return candidates;
 }
 

@@ -9,7 +9,9 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_COMPLETION_IMPL_H
 
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
-#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
 #include <Eigen/Dense>
 
@@ -44,6 +46,12 @@ struct Completion_constants
   static constexpr double spur_crossing_turn_angle = 30;
   /// Passes over all ends; each pass stops at the first change.
   static constexpr std::size_t max_rounds = 10000;
+  /// An end looks for targets on its own curve only farther along it than this many completion
+  /// distances: nearer vertices are the same stretch of crease, bending.
+  static constexpr double own_curve_skip = 2;
+  /// Vertices closer than this (relative to the growth radius) count as coincident in the
+  /// inverse-distance weights of the Laplacian smoothing.
+  static constexpr double coincident_vertex_distance = 1e-12;
   /// Smallest eigenvalue of the junction system (a sum of projectors): below it the tangents
   /// are too close to parallel to define where they cross.
   static constexpr double junction_conditioning = 0.05;
@@ -56,7 +64,7 @@ struct Completion_constants
   static constexpr double corner_fit_window = 3;
 };
 
-inline double curve_length(const Curve& c)
+inline double curve_length(const Working_polyline& c)
 {
   double length = 0;
   for(std::size_t i = 1; i < c.points.size(); ++i)
@@ -68,21 +76,12 @@ inline double curve_length(const Curve& c)
 /// direction; false if the direction is undefined (coincident points).
 inline bool fit_line(const std::vector<Vec3>& points, Vec3& centroid, Vec3& direction)
 {
-  centroid = Vec3::Zero();
-  for(const Vec3& v : points)
-    centroid += v;
-  centroid /= double(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for(const Vec3& v : points)
-    covariance.noalias() += (v - centroid) * (v - centroid).transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(covariance);
-  direction = solver.eigenvectors().col(2).normalized();
+  fit_principal_line(points.size(), [&](std::size_t j) -> const Vec3& { return points[j]; }, centroid, direction);
   return direction.allFinite();
 }
 
 /// Outward unit tangent at the front (`back == false`) or back end of an open curve.
-inline Vec3 end_tangent(const Curve& c, bool back)
+inline Vec3 end_tangent(const Working_polyline& c, bool back)
 {
   const std::size_t n = c.points.size();
   const std::size_t m = (std::min)(Completion_constants::tangent_vertices, n);
@@ -96,7 +95,7 @@ inline Vec3 end_tangent(const Curve& c, bool back)
   return t.dot(at(0) - at(m - 1)) >= 0 ? t : Vec3(-t);
 }
 
-inline void reverse_curve(Curve& c)
+inline void reverse_curve(Working_polyline& c)
 {
   std::reverse(c.points.begin(), c.points.end());
   std::reverse(c.normals.begin(), c.normals.end());
@@ -104,7 +103,7 @@ inline void reverse_curve(Curve& c)
 }
 
 /// `a` followed by `b` (which must start where the joining segment ends).
-inline void append_curve(Curve& a, const Curve& b)
+inline void append_curve(Working_polyline& a, const Working_polyline& b)
 {
   a.points.insert(a.points.end(), b.points.begin(), b.points.end());
   a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
@@ -113,12 +112,12 @@ inline void append_curve(Curve& a, const Curve& b)
 
 class Curve_completion
 {
-  typedef Completion_constants C;
+  typedef Completion_constants Constants;
 
 public:
-  Curve_completion(Curve_network& network, const Scales& scales, const Settings& settings)
-    : m_net(network), m_scales(scales), m_settings(settings),
-      m_cos_aperture(std::cos(radians(settings.completion_aperture)))
+  Curve_completion(Working_network& network, const Completion_parameters& parameters)
+    : m_net(network), m_scales(network.scales), m_parameters(parameters),
+      m_cos_aperture(std::cos(radians(parameters.aperture)))
   {}
 
   void run()
@@ -126,10 +125,10 @@ public:
     drop_short_free_curves();
     // End analysis, one change at a time: every change renumbers curves and vertices.
     std::vector<std::pair<std::size_t, bool>> dissipating;
-    for(std::size_t round = 0; round < C::max_rounds; ++round)
+    for(std::size_t round = 0; round < Constants::max_rounds; ++round)
     {
       bool changed = false;
-      for(std::size_t c = 0; c < m_net.curves.size() && !changed; ++c)
+      for(std::size_t c = 0; c < m_net.polylines.size() && !changed; ++c)
         for(bool back : {false, true})
         {
           if(!is_free_end(c, back)
@@ -149,36 +148,36 @@ public:
     join_converging_ends();
     clean_corners();
     split_sharp_turns();
-    for(unsigned int pass = 0; pass < m_settings.laplacian_passes; ++pass)
-      for(Curve& c : m_net.curves)
+    for(unsigned int pass = 0; pass < m_parameters.laplacian_passes; ++pass)
+      for(Working_polyline& c : m_net.polylines)
       {
-        laplacian_step(c, C::laplacian_step);
-        laplacian_step(c, C::inflation_step);
+        laplacian_step(c, Constants::laplacian_step);
+        laplacian_step(c, Constants::inflation_step);
       }
     place_corners();
     finalize();
   }
 
 private:
-  Curve_network& m_net;
+  Working_network& m_net;
   const Scales& m_scales;
-  const Settings& m_settings;
+  const Completion_parameters& m_parameters;
   double m_cos_aperture;
 
   bool is_free_end(std::size_t c, bool back) const
   {
-    const Curve& curve = m_net.curves[c];
-    return !curve.closed && (back ? curve.back_corner : curve.front_corner) == no_index;
+    const Working_polyline& curve = m_net.polylines[c];
+    return !is_loop_without_corner(curve) && (back ? curve.back_corner : curve.front_corner) == no_index;
   }
 
   void drop_short_free_curves()
   {
-    std::vector<Curve> kept;
-    for(Curve& c : m_net.curves)
-      if(c.closed || c.front_corner != no_index || c.back_corner != no_index
-         || curve_length(c) >= C::min_length * m_scales.growth_radius)
+    std::vector<Working_polyline> kept;
+    for(Working_polyline& c : m_net.polylines)
+      if(is_loop_without_corner(c) || c.front_corner != no_index || c.back_corner != no_index
+         || curve_length(c) >= Constants::min_length * m_scales.growth_radius)
         kept.push_back(std::move(c));
-    m_net.curves.swap(kept);
+    m_net.polylines.swap(kept);
   }
 
   struct Target
@@ -203,10 +202,9 @@ private:
       if(in_cone(m_net.corners[k].point, d) && d < best.distance)
         best = Target{no_index, no_index, k, d};
     }
-    const double own_reach = m_scales.completion_distance;
-    for(std::size_t d_index = 0; d_index < m_net.curves.size(); ++d_index)
+    for(std::size_t d_index = 0; d_index < m_net.polylines.size(); ++d_index)
     {
-      const Curve& other = m_net.curves[d_index];
+      const Working_polyline& other = m_net.polylines[d_index];
       const std::size_t n = other.points.size();
       for(std::size_t v = 0; v < n; ++v)
       {
@@ -215,7 +213,7 @@ private:
           // On its own curve, an end only sees the other end, or vertices far along the curve.
           const std::size_t from_end = back ? n - 1 - v : v;
           const bool other_end = from_end == n - 1;
-          if(!other_end && arc_length_from_end(other, back, from_end) < 2 * own_reach)
+          if(!other_end && arc_length_from_end(other, back, from_end) < Constants::own_curve_skip * reach)
             continue;
         }
         double d;
@@ -226,7 +224,7 @@ private:
     return best;
   }
 
-  static double arc_length_from_end(const Curve& c, bool back, std::size_t steps)
+  static double arc_length_from_end(const Working_polyline& c, bool back, std::size_t steps)
   {
     double length = 0;
     const std::size_t n = c.points.size();
@@ -240,13 +238,13 @@ private:
 
   std::size_t add_corner(const Vec3& point, const std::array<Vec3, 2>& normals)
   {
-    m_net.corners.push_back(Corner_node{point, {normals[0], normals[1]}});
+    m_net.corners.push_back(Working_corner{point, {normals[0], normals[1]}});
     return m_net.corners.size() - 1;
   }
 
   void attach_to_corner(std::size_t c, bool back, std::size_t corner)
   {
-    Curve& curve = m_net.curves[c];
+    Working_polyline& curve = m_net.polylines[c];
     if(!back)
       reverse_curve(curve);
     // An end that overshot the corner (e.g. past a concave corner) is cut back to it, so that
@@ -270,7 +268,7 @@ private:
   // Resolves one free end; returns true if the network changed.
   bool resolve_end(std::size_t c, bool back)
   {
-    Curve& curve = m_net.curves[c];
+    Working_polyline& curve = m_net.polylines[c];
     const Vec3 end = back ? curve.points.back() : curve.points.front();
     const Vec3 tangent = end_tangent(curve, back);
     const Target target = find_target(c, back, end, tangent);
@@ -281,9 +279,9 @@ private:
       attach_to_corner(c, back, target.corner);
       return true;
     }
-    Curve& other = m_net.curves[target.curve];
+    Working_polyline& other = m_net.polylines[target.curve];
     const std::size_t n = other.points.size();
-    const bool at_end = !other.closed && (target.vertex == 0 || target.vertex == n - 1);
+    const bool at_end = !is_loop_without_corner(other) && (target.vertex == 0 || target.vertex == n - 1);
     if(at_end)
     {
       const bool other_back = target.vertex == n - 1;
@@ -300,7 +298,6 @@ private:
         {
           curve.points.push_back(curve.points.front());
           curve.normals.push_back(curve.normals.front());
-          curve.closed = true;
         }
         else
           merge_ends(c, back, target.curve, other_back);
@@ -331,11 +328,11 @@ private:
   std::vector<Free_end> free_ends() const
   {
     std::vector<Free_end> ends;
-    for(std::size_t c = 0; c < m_net.curves.size(); ++c)
+    for(std::size_t c = 0; c < m_net.polylines.size(); ++c)
       for(bool back : {false, true})
         if(is_free_end(c, back))
         {
-          const Curve& curve = m_net.curves[c];
+          const Working_polyline& curve = m_net.polylines[c];
           ends.push_back(Free_end{c, back, back ? curve.points.back() : curve.points.front(), end_tangent(curve, back)});
         }
     return ends;
@@ -353,7 +350,7 @@ private:
       b += projector * e.point;
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a);
-    if(solver.eigenvalues()[0] < C::junction_conditioning)
+    if(solver.eigenvalues()[0] < Constants::junction_conditioning)
       return false;
     x = a.ldlt().solve(b);
     return x.allFinite();
@@ -368,7 +365,7 @@ private:
     if(along < -m_scales.growth_radius || along > m_scales.completion_distance)
       return false;
     const double off = (d - along * e.tangent).norm();
-    return off <= (std::max)(m_scales.growth_radius, std::tan(radians(m_settings.completion_aperture)) * along);
+    return off <= (std::max)(m_scales.growth_radius, std::tan(radians(m_parameters.aperture)) * along);
   }
 
   // Creates a corner where the rays of `a`, `b` and every other free end reaching the same point
@@ -384,10 +381,10 @@ private:
         group.push_back(e);
     if(group.size() > 2 && !junction_point(group, x))
       return false;
-    Corner_node node{x, {}};
+    Working_corner node{x, {}};
     for(const Free_end& e : group)
     {
-      const Curve& curve = m_net.curves[e.curve];
+      const Working_polyline& curve = m_net.polylines[e.curve];
       const std::array<Vec3, 2>& n = e.back ? curve.normals.back() : curve.normals.front();
       node.normals.push_back(n[0]);
       node.normals.push_back(n[1]);
@@ -433,23 +430,23 @@ private:
 
   void merge_ends(std::size_t c, bool back, std::size_t d, bool other_back)
   {
-    Curve a = m_net.curves[c], b = m_net.curves[d];
+    Working_polyline a = m_net.polylines[c], b = m_net.polylines[d];
     if(!back)
       reverse_curve(a);
     if(other_back)
       reverse_curve(b);
     append_curve(a, b);
-    m_net.curves[c] = std::move(a);
-    m_net.curves.erase(m_net.curves.begin() + d);
+    m_net.polylines[c] = std::move(a);
+    m_net.polylines.erase(m_net.polylines.begin() + d);
   }
 
   void split_at(std::size_t d, std::size_t vertex, std::size_t corner)
   {
-    Curve& curve = m_net.curves[d];
-    if(curve.closed)
+    Working_polyline& curve = m_net.polylines[d];
+    if(is_loop_without_corner(curve))
     {
       // Re-open the loop at the corner: it starts and ends there.
-      Curve open;
+      Working_polyline open;
       const std::size_t m = curve.points.size() - 1;
       for(std::size_t k = 0; k <= m; ++k)
       {
@@ -460,7 +457,7 @@ private:
       curve = std::move(open);
       return;
     }
-    Curve second;
+    Working_polyline second;
     second.points.assign(curve.points.begin() + vertex, curve.points.end());
     second.normals.assign(curve.normals.begin() + vertex, curve.normals.end());
     second.front_corner = corner;
@@ -468,18 +465,18 @@ private:
     curve.points.resize(vertex + 1);
     curve.normals.resize(vertex + 1);
     curve.back_corner = corner;
-    m_net.curves.push_back(std::move(second));
+    m_net.polylines.push_back(std::move(second));
   }
 
   std::vector<std::vector<std::pair<std::size_t, bool>>> incidences() const
   {
     std::vector<std::vector<std::pair<std::size_t, bool>>> at(m_net.corners.size());
-    for(std::size_t c = 0; c < m_net.curves.size(); ++c)
+    for(std::size_t c = 0; c < m_net.polylines.size(); ++c)
     {
-      if(m_net.curves[c].front_corner != no_index)
-        at[m_net.curves[c].front_corner].emplace_back(c, false);
-      if(m_net.curves[c].back_corner != no_index)
-        at[m_net.curves[c].back_corner].emplace_back(c, true);
+      if(m_net.polylines[c].front_corner != no_index)
+        at[m_net.polylines[c].front_corner].emplace_back(c, false);
+      if(m_net.polylines[c].back_corner != no_index)
+        at[m_net.polylines[c].back_corner].emplace_back(c, true);
     }
     return at;
   }
@@ -496,7 +493,7 @@ private:
       {
         if(at[k].size() == 1)
         {
-          Curve& c = m_net.curves[at[k][0].first];
+          Working_polyline& c = m_net.polylines[at[k][0].first];
           (at[k][0].second ? c.back_corner : c.front_corner) = no_index;
           changed = true;
         }
@@ -509,15 +506,14 @@ private:
             continue;
           if(c0 == c1)
           {
-            Curve& c = m_net.curves[c0];
+            Working_polyline& c = m_net.polylines[c0];
             c.front_corner = c.back_corner = no_index;
             c.points.back() = c.points.front();
-            c.closed = true;
           }
           else
           {
-            Curve& a = m_net.curves[c0];
-            Curve b = m_net.curves[c1];
+            Working_polyline& a = m_net.polylines[c0];
+            Working_polyline b = m_net.polylines[c1];
             if(!b0)
               reverse_curve(a);
             if(b1)
@@ -526,7 +522,7 @@ private:
             b.points.erase(b.points.begin());
             b.normals.erase(b.normals.begin());
             append_curve(a, b);
-            m_net.curves.erase(m_net.curves.begin() + c1);
+            m_net.polylines.erase(m_net.polylines.begin() + c1);
           }
           changed = true;
         }
@@ -538,10 +534,10 @@ private:
   // Whether the curves of two ends at a corner continue each other there: their tangents out
   // of the corner turn by less than `turn_angle` (degrees).
   bool continue_each_other(const std::pair<std::size_t, bool>& a, const std::pair<std::size_t, bool>& b,
-                           double turn_angle = C::sharp_turn_angle) const
+                           double turn_angle = Constants::sharp_turn_angle) const
   {
-    const Curve& ca = m_net.curves[a.first];
-    const Curve& cb = m_net.curves[b.first];
+    const Working_polyline& ca = m_net.polylines[a.first];
+    const Working_polyline& cb = m_net.polylines[b.first];
     if(ca.points.size() < 2 || cb.points.size() < 2)
       return false;
     const Vec3 ta = -end_tangent(ca, a.second), tb = -end_tangent(cb, b.second);
@@ -562,12 +558,12 @@ private:
         continue;
       for(std::size_t k = 0; k < 3; ++k)
       {
-        const Curve& spur = m_net.curves[ends[k].first];
-        if(spur.closed || (spur.front_corner == no_index) == (spur.back_corner == no_index)
-           || curve_length(spur) >= C::min_length * m_scales.growth_radius
-           || !continue_each_other(ends[(k + 1) % 3], ends[(k + 2) % 3], C::spur_crossing_turn_angle))
+        const Working_polyline& spur = m_net.polylines[ends[k].first];
+        if(is_loop_without_corner(spur) || (spur.front_corner == no_index) == (spur.back_corner == no_index)
+           || curve_length(spur) >= Constants::min_length * m_scales.growth_radius
+           || !continue_each_other(ends[(k + 1) % 3], ends[(k + 2) % 3], Constants::spur_crossing_turn_angle))
           continue;
-        m_net.curves.erase(m_net.curves.begin() + std::ptrdiff_t(ends[k].first));
+        m_net.polylines.erase(m_net.polylines.begin() + std::ptrdiff_t(ends[k].first));
         return true;
       }
     }
@@ -578,7 +574,7 @@ private:
   {
     const auto at = incidences();
     std::vector<std::size_t> renumber(m_net.corners.size(), no_index);
-    std::vector<Corner_node> kept;
+    std::vector<Working_corner> kept;
     for(std::size_t k = 0; k < m_net.corners.size(); ++k)
       if(!at[k].empty())
       {
@@ -586,7 +582,7 @@ private:
         kept.push_back(m_net.corners[k]);
       }
     m_net.corners.swap(kept);
-    for(Curve& c : m_net.curves)
+    for(Working_polyline& c : m_net.polylines)
     {
       if(c.front_corner != no_index)
         c.front_corner = renumber[c.front_corner];
@@ -598,7 +594,7 @@ private:
   // Mesh_3 rounds off turns inside a polyline: split sharp turns into two curves at a corner.
   void split_sharp_turns()
   {
-    for(std::size_t c = 0; c < m_net.curves.size();)
+    for(std::size_t c = 0; c < m_net.polylines.size();)
       if(!split_first_sharp_turn(c))
         ++c;
   }
@@ -607,8 +603,8 @@ private:
   // appended to the list, a reopened loop keeps its index).
   bool split_first_sharp_turn(std::size_t c)
   {
-    const double cos_turn = std::cos(radians(C::sharp_turn_angle));
-    const Curve& curve = m_net.curves[c];
+    const double cos_turn = std::cos(radians(Constants::sharp_turn_angle));
+    const Working_polyline& curve = m_net.polylines[c];
     for(std::size_t v = 1; v + 1 < curve.points.size(); ++v)
     {
       const Vec3 a = (curve.points[v] - curve.points[v - 1]).normalized();
@@ -625,23 +621,25 @@ private:
 
   // Moves every interior vertex of `c` by `step` times the way to the inverse-distance weighted
   // average of its two neighbours (ends fixed; a closed curve has no ends).
-  void laplacian_step(Curve& c, double step) const
+  void laplacian_step(Working_polyline& c, double step) const
   {
     const std::size_t n = c.points.size();
     if(n < 3)
       return;
     std::vector<Vec3> next = c.points;
-    const std::size_t first = c.closed ? 0 : 1, last = n - 1;
+    const bool loop = is_loop_without_corner(c);
+    const std::size_t first = loop ? 0 : 1, last = n - 1;
+    const double coincident = Constants::coincident_vertex_distance * m_scales.growth_radius;
     for(std::size_t v = first; v < last; ++v)
     {
       const Vec3& prev = c.points[v == 0 ? n - 2 : v - 1];
       const Vec3& succ = c.points[v + 1];
-      const double wa = 1. / (std::max)((prev - c.points[v]).norm(), 1e-12);
-      const double wb = 1. / (std::max)((succ - c.points[v]).norm(), 1e-12);
+      const double wa = 1. / (std::max)((prev - c.points[v]).norm(), coincident);
+      const double wb = 1. / (std::max)((succ - c.points[v]).norm(), coincident);
       const Vec3 target = (wa * prev + wb * succ) / (wa + wb);
       next[v] = c.points[v] + step * (target - c.points[v]);
     }
-    if(c.closed)
+    if(loop)
       next[n - 1] = next[0];
     c.points.swap(next);
   }
@@ -649,12 +647,12 @@ private:
   // The line fitted to the vertices of curve `c` at arc lengths from `corner_fit_skip` to
   // `corner_fit_skip + corner_fit_window` growth radii from its front (`back == false`) or back
   // end, as a point and a unit direction; false if fewer than two vertices lie in the window.
-  bool end_line(const Curve& c, bool back, Free_end& line) const
+  bool end_line(const Working_polyline& c, bool back, Free_end& line) const
   {
     const std::size_t n = c.points.size();
     auto at = [&](std::size_t k) -> const Vec3& { return back ? c.points[n - 1 - k] : c.points[k]; };
-    const double from = C::corner_fit_skip * m_scales.growth_radius;
-    const double to = from + C::corner_fit_window * m_scales.growth_radius;
+    const double from = Constants::corner_fit_skip * m_scales.growth_radius;
+    const double to = from + Constants::corner_fit_window * m_scales.growth_radius;
     std::vector<Vec3> window;
     double arc = 0;
     for(std::size_t k = 1; k < n && arc <= to; ++k)
@@ -680,7 +678,7 @@ private:
       for(const auto& [c, back] : at[k])
       {
         Free_end line;
-        if(end_line(m_net.curves[c], back, line))
+        if(end_line(m_net.polylines[c], back, line))
           lines.push_back(line);
       }
       Vec3 x;
@@ -691,17 +689,16 @@ private:
     }
   }
 
-  // Exact shared points, consistent normals.
+  // Exact shared points, consistent normals. (Loops without a corner are exact already: every
+  // step that moves a vertex moves their first and last together.)
   void finalize()
   {
-    for(Curve& c : m_net.curves)
+    for(Working_polyline& c : m_net.polylines)
     {
       if(c.front_corner != no_index)
         c.points.front() = m_net.corners[c.front_corner].point;
       if(c.back_corner != no_index)
         c.points.back() = m_net.corners[c.back_corner].point;
-      if(c.closed)
-        c.points.back() = c.points.front();
       for(std::size_t v = 1; v < c.normals.size(); ++v)
         c.normals[v] = align_normal_pair(c.normals[v - 1], c.normals[v]);
     }
@@ -709,9 +706,22 @@ private:
 };
 
 /// Stage 5.
-inline void complete_polylines(Curve_network& network, const Scales& scales, const Settings& settings)
+inline void complete_polylines(Working_network& network, const Completion_parameters& parameters)
 {
-  Curve_completion(network, scales, settings).run();
+  Curve_completion(network, parameters).run();
+  index_incident_polylines(network);
+}
+
+/// Stage 5 on the user's network (converted to the working traits and back), with the scales
+/// given in `np` replacing those of `network`.
+template <typename GT, typename NamedParameters>
+void complete_feature_curve_network(Feature_curve_network<GT>& network, const NamedParameters& np,
+                                    const Completion_parameters& parameters)
+{
+  Working_network working = convert_network<Working_traits>(network);
+  override_scales(np, working.scales);
+  complete_polylines(working, parameters);
+  network = convert_network<GT>(working);
 }
 
 } // namespace internal

@@ -9,7 +9,10 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
 #include <Eigen/Dense>
 
@@ -28,25 +31,27 @@ struct Growing_constants
   static constexpr double cone_angle = 45;
   /// Polylines with fewer vertices are dropped (the paper's rule).
   static constexpr std::size_t min_vertices = 4;
+  /// Seeds tried between two progress reports.
+  static constexpr std::size_t seeds_per_progress_report = 1024;
 };
 
 class Polyline_grower
 {
-  typedef Growing_constants C;
+  typedef Growing_constants Constants;
 
 public:
-  Polyline_grower(const std::vector<Edge_sample>& edges, const std::vector<Corner_sample>& corners, double radius)
+  Polyline_grower(const std::vector<Working_edge_point>& edges, const std::vector<Working_corner_point>& corners, double radius)
     : m_edges(edges), m_radius(radius), m_visited(edges.size(), false)
   {
     std::vector<Vec3> positions;
-    for(const Edge_sample& e : edges)
+    for(const Working_edge_point& e : edges)
       positions.push_back(e.point);
     m_index.build<CGAL::Sequential_tag>(positions);
-    for(const Corner_sample& c : corners)
+    for(const Working_corner_point& c : corners)
       m_corners.push_back(c.point);
     m_corner_index.build<CGAL::Sequential_tag>(m_corners);
     m_cos_same = std::cos(radians(same_crease_normal_angle));
-    m_cos_cone = std::cos(radians(C::cone_angle));
+    m_cos_cone = std::cos(radians(Constants::cone_angle));
   }
 
   /// Seeds in order: farthest from any corner first (ties by index, for determinism).
@@ -67,14 +72,14 @@ public:
   }
 
   /// Grows one polyline from `seed`; returns false when the seed has no line around it.
-  bool grow(std::size_t seed, Curve& curve)
+  bool grow(std::size_t seed, Working_polyline& curve)
   {
-    curve = Curve();
+    curve = Working_polyline();
     m_visited[seed] = true;
     Vec3 direction;
     if(!local_direction(seed, direction))
       return false;
-    Curve forward, backward;
+    Working_polyline forward, backward;
     const bool closed = walk(seed, direction, seed, forward);
     if(!closed)
       walk(seed, -direction, seed, backward);
@@ -93,7 +98,6 @@ public:
     curve.back_corner = forward.back_corner;
     if(closed)
     {
-      curve.closed = true;
       curve.points.push_back(curve.points.front());
       curve.normals.push_back(curve.normals.front());
     }
@@ -103,7 +107,7 @@ public:
   bool visited(std::size_t i) const { return m_visited[i]; }
 
 private:
-  const std::vector<Edge_sample>& m_edges;
+  const std::vector<Working_edge_point>& m_edges;
   double m_radius;
   std::vector<bool> m_visited;
   Point_index m_index, m_corner_index;
@@ -125,25 +129,15 @@ private:
     same_crease_within(i, m_near);
     if(m_near.size() < 3)
       return false;
-    Vec3 centroid = Vec3::Zero();
-    for(std::size_t j : m_near)
-      centroid += m_edges[j].point;
-    centroid /= double(m_near.size());
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for(std::size_t j : m_near)
-    {
-      const Vec3 d = m_edges[j].point - centroid;
-      covariance.noalias() += d * d.transpose();
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-    solver.computeDirect(covariance);
-    direction = solver.eigenvectors().col(2).normalized();
+    Vec3 centroid;
+    fit_principal_line(m_near.size(), [&](std::size_t j) -> const Vec3& { return m_edges[m_near[j]].point; },
+                       centroid, direction);
     return direction.allFinite();
   }
 
   // Walks from `start` along `direction`; vertices are appended to `out`. Returns true when
   // the walk came back to `seed` (closed loop).
-  bool walk(std::size_t start, Vec3 direction, std::size_t seed, Curve& out)
+  bool walk(std::size_t start, Vec3 direction, std::size_t seed, Working_polyline& out)
   {
     std::size_t current = start;
     std::array<Vec3, 2> normals = m_edges[start].normals;
@@ -214,31 +208,51 @@ private:
   }
 };
 
-/// Stage 4: all polylines through the edge points, with the corners as fixed vertices.
-inline Curve_network grow_polylines(const Feature_samples& features, double radius, Progress progress)
+/// Stage 4: all polylines through the edge points, with the corners as fixed vertices, within
+/// the growth radius of `features.scales`.
+inline Working_network grow_polylines(const Working_feature_points& features, Progress progress)
 {
-  Curve_network network;
-  for(const Corner_sample& c : features.corners)
-    network.corners.push_back(Corner_node{c.point, {c.normals[0], c.normals[1], c.normals[2]}});
-  if(features.edges.empty())
+  const double radius = features.scales.growth_radius;
+  Working_network network;
+  network.scales = features.scales;
+  for(const Working_corner_point& c : features.corner_points)
+    network.corners.push_back(Working_corner{c.point, {c.normals[0], c.normals[1], c.normals[2]}});
+  if(features.edge_points.empty())
     return network;
-  Polyline_grower grower(features.edges, features.corners, radius);
+  Polyline_grower grower(features.edge_points, features.corner_points, radius);
   const std::vector<std::size_t> order = grower.seed_order();
   for(std::size_t k = 0; k < order.size(); ++k)
   {
     if(grower.visited(order[k]))
       continue;
-    Curve curve;
+    Working_polyline curve;
     std::size_t vertices = 0;
     if(grower.grow(order[k], curve))
       vertices = curve.points.size();
     if(vertices >= Growing_constants::min_vertices)
-      network.curves.push_back(std::move(curve));
-    if(k % 1024 == 0 && !progress.report(double(k) / double(order.size())))
+      network.polylines.push_back(std::move(curve));
+    if(k % Growing_constants::seeds_per_progress_report == 0 && !progress.report(double(k) / double(order.size())))
       return network;
   }
+  index_incident_polylines(network);
   progress.report(1.);
   return network;
+}
+
+/// Stage 4 on the user's feature points (converted to the working traits and back), with the
+/// scales given in `np` replacing those of `features`. Returns false if cancelled.
+template <typename GT, typename NamedParameters>
+bool grow_feature_curve_network(const Feature_point_set<GT>& features, Feature_curve_network<GT>& network,
+                                const NamedParameters& np, const Progress_callback& callback)
+{
+  Working_feature_points working = convert_feature_points<Working_traits>(features);
+  override_scales(np, working.scales);
+  Progress progress(callback);
+  const Working_network grown = grow_polylines(working, progress);
+  if(progress.cancelled())
+    return false;
+  network = convert_network<GT>(grown);
+  return true;
 }
 
 } // namespace internal

@@ -9,12 +9,12 @@
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RMLS_PROJECTION_IMPL_H
 
 #include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
-#include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/Indexed_input.h>
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
-#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
 #include <Eigen/Dense>
 
@@ -66,10 +66,14 @@ struct Forward_search_constants
 /// One smooth surface found by the forward search.
 struct Rmls_surface
 {
-  Height_field fit;
+  Height_field height_field;
   std::vector<std::size_t> members; // local indices into the neighbourhood
   Vec3 centroid = Vec3::Zero();
 };
+
+/// Two planes whose normals make an angle with a squared sine below this (0.006 degrees) are
+/// parallel: their line of intersection is undefined.
+constexpr double parallel_planes_squared_sine = 1e-8;
 
 /// Closest point to `q` on the line where the planes (a, na) and (b, nb) meet.
 /// Returns false if the planes are nearly parallel.
@@ -79,7 +83,7 @@ inline bool closest_on_plane_intersection(const Vec3& q, const Vec3& a, const Ve
   // x = q + la * na + lb * nb with na.x = na.a and nb.x = nb.b.
   const double c = na.dot(nb);
   const double det = 1 - c * c;
-  if(det < 1e-8)
+  if(det < parallel_planes_squared_sine)
     return false;
   const double ra = na.dot(a - q), rb = nb.dot(b - q);
   const double la = (ra - c * rb) / det, lb = (rb - c * ra) / det;
@@ -90,7 +94,7 @@ inline bool closest_on_plane_intersection(const Vec3& q, const Vec3& a, const Ve
 /// The per-thread workspace and algorithm of the forward search.
 class Forward_search
 {
-  typedef Forward_search_constants C;
+  typedef Forward_search_constants Constants;
 
 public:
   std::vector<Vec3> local;          // the neighbourhood, nearest to the candidate first
@@ -108,8 +112,8 @@ public:
     surfaces.clear();
     const std::size_t n = local.size();
     m_assigned.assign(n, false);
-    const std::size_t min_size = (std::max)(C::min_surface_points, std::size_t(C::min_surface_fraction * double(n)));
-    while(surfaces.size() < C::max_surfaces)
+    const std::size_t min_size = (std::max)(Constants::min_surface_points, std::size_t(Constants::min_surface_fraction * double(n)));
+    while(surfaces.size() < Constants::max_surfaces)
     {
       std::size_t remaining = std::count(m_assigned.begin(), m_assigned.end(), false);
       if(remaining < min_size)
@@ -141,8 +145,8 @@ public:
   void refine(std::vector<Rmls_surface*>& set, double tolerance, int degree, const Vec3& center)
   {
     const bool planes = degree == 1;
-    const std::size_t rounds = planes ? C::plane_refinement_rounds : C::quadric_refinement_rounds;
-    const double bandwidth = (planes ? C::plane_fit_bandwidth : C::quadric_fit_bandwidth) * radius();
+    const std::size_t rounds = planes ? Constants::plane_refinement_rounds : Constants::quadric_refinement_rounds;
+    const double bandwidth = (planes ? Constants::plane_fit_bandwidth : Constants::quadric_fit_bandwidth) * radius();
     for(std::size_t round = 0; round < rounds; ++round)
     {
       const bool halves = planes && set.size() == 2 && set_halves(*set[0], *set[1], center);
@@ -155,7 +159,7 @@ public:
         double best_residual = tolerance;
         for(std::size_t k = 0; k < set.size(); ++k)
         {
-          const double r = halves ? half_residual(*set[k], k, local[i]) : set[k]->fit.residual(local[i]);
+          const double r = halves ? half_residual(*set[k], k, local[i]) : set[k]->height_field.residual(local[i]);
           if(r <= best_residual)
           {
             best_residual = r;
@@ -174,7 +178,7 @@ public:
           Local_frame frame;
           Vec3 spread;
           if(principal_frame(local, s->members, frame, spread))
-            s->fit.fit(local, s->members, frame, degree, center, bandwidth);
+            s->height_field.fit(local, s->members, frame, degree, center, bandwidth);
         }
         s->centroid = Vec3::Zero();
         for(std::size_t i : s->members)
@@ -201,8 +205,8 @@ private:
   // `center`; false if the planes are nearly parallel or a centroid lies on the line.
   bool set_halves(const Rmls_surface& a, const Rmls_surface& b, const Vec3& center)
   {
-    const Vec3 na = a.fit.normal(center), nb = b.fit.normal(center);
-    if(!closest_on_plane_intersection(center, a.fit.foot(center), na, b.fit.foot(center), nb, m_line_point))
+    const Vec3 na = a.height_field.normal(center), nb = b.height_field.normal(center);
+    if(!closest_on_plane_intersection(center, a.height_field.foot(center), na, b.height_field.foot(center), nb, m_line_point))
       return false;
     const Vec3 t = na.cross(nb).normalized();
     const Rmls_surface* s[2] = {&a, &b};
@@ -225,7 +229,7 @@ private:
   // lies d sin(angle) from the other plane but d from its half.
   double half_residual(const Rmls_surface& s, std::size_t k, const Vec3& x) const
   {
-    const double h = s.fit.residual(x);
+    const double h = s.height_field.residual(x);
     const double beyond = (x - m_line_point).dot(m_half_direction[k]);
     return beyond >= 0 ? h : std::sqrt(h * h + beyond * beyond);
   }
@@ -239,18 +243,18 @@ private:
         m_free.push_back(i);
     // Smaller seeds when what is left may hold two small surfaces (near corners), but enough
     // points to determine the fit.
-    const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : C::min_surface_points;
+    const std::size_t smallest = degree >= 2 ? Height_field::minimum_points_for_quadric : Constants::min_surface_points;
     // Plane seeds (noisy data) hold at least the smallest surface the search accepts: the
     // neighbourhood grows with the noise, and so must the seed for its plane to tilt no more
     // than the noise allows (the tilt error of a plane fit falls as 1/sqrt(points)).
     const std::size_t seed_size = degree >= 2
-      ? C::quadric_seed_size
-      : (std::max)(C::plane_seed_size, std::size_t(C::min_surface_fraction * double(local.size())));
+      ? Constants::quadric_seed_size
+      : (std::max)(Constants::plane_seed_size, std::size_t(Constants::min_surface_fraction * double(local.size())));
     const std::size_t size = (std::min)(m_free.size(), (std::max)(smallest, (std::min)(seed_size, m_free.size() / 3)));
     // Farthest point sampling of the centres, starting from the free point nearest the candidate;
     // the distances of the free points to each centre are kept for the seed selection below.
     const std::size_t free_count = m_free.size();
-    const std::size_t center_count = (std::min)(C::seed_trials, free_count);
+    const std::size_t center_count = (std::min)(Constants::seed_trials, free_count);
     m_centers.assign(1, 0);
     m_distance.assign(free_count, std::numeric_limits<double>::infinity());
     m_center_distance.resize(center_count * free_count);
@@ -302,11 +306,11 @@ private:
     return best_score <= tolerance;
   }
 
-  bool refit(const std::vector<std::size_t>& members, int degree, Height_field& fit) const
+  bool refit(const std::vector<std::size_t>& members, int degree, Height_field& height_field) const
   {
     Local_frame frame;
     Vec3 spread;
-    return principal_frame(local, members, frame, spread) && fit.fit(local, members, frame, degree);
+    return principal_frame(local, members, frame, spread) && height_field.fit(local, members, frame, degree);
   }
 
   // Grows the seed by batches of the best-fitting free points while they fit within the
@@ -317,15 +321,15 @@ private:
     m_member.assign(local.size(), false);
     for(std::size_t i : members)
       m_member[i] = true;
-    for(std::size_t step = 0; step < C::max_growth_steps; ++step)
+    for(std::size_t step = 0; step < Constants::max_growth_steps; ++step)
     {
-      if(!refit(members, degree, surface.fit))
+      if(!refit(members, degree, surface.height_field))
         break;
       bool changed = false;
       // Release members that the refit left out of the tolerance.
       std::size_t kept = 0;
       for(std::size_t i : members)
-        if(surface.fit.residual(local[i]) <= tolerance)
+        if(surface.height_field.residual(local[i]) <= tolerance)
           members[kept++] = i;
         else
           m_member[i] = false, changed = true;
@@ -337,12 +341,12 @@ private:
       for(std::size_t j = 0; j < local.size(); ++j)
         if(!m_assigned[j] && !m_member[j])
         {
-          const double r = surface.fit.residual(local[j]);
+          const double r = surface.height_field.residual(local[j]);
           if(r <= tolerance)
             m_ranked.emplace_back(r, j);
         }
       const std::size_t batch = (std::min)(m_ranked.size(),
-        (std::max<std::size_t>)(1, std::size_t(C::batch_fraction * double(members.size()))));
+        (std::max<std::size_t>)(1, std::size_t(Constants::batch_fraction * double(members.size()))));
       if(batch > 0)
       {
         std::partial_sort(m_ranked.begin(), m_ranked.begin() + batch, m_ranked.end());
@@ -357,15 +361,15 @@ private:
         break;
     }
     std::sort(members.begin(), members.end());
-    refit(members, degree, surface.fit);
+    refit(members, degree, surface.height_field);
   }
 };
 
 struct Projection
 {
   bool has_edge = false, has_corner = false;
-  Edge_sample edge;
-  Corner_sample corner;
+  Working_edge_point edge;
+  Working_corner_point corner;
 };
 
 /// Newton-like projection of `start` onto the intersection of surfaces `a` and `b`: project onto
@@ -376,8 +380,8 @@ inline bool project_on_edge(const Rmls_surface& a, const Rmls_surface& b, const 
   e = start;
   for(std::size_t it = 0; it < Forward_search_constants::max_newton_steps; ++it)
   {
-    const Vec3 fa = a.fit.foot(e), fb = b.fit.foot(e);
-    const Vec3 na = a.fit.normal(e), nb = b.fit.normal(e);
+    const Vec3 fa = a.height_field.foot(e), fb = b.height_field.foot(e);
+    const Vec3 na = a.height_field.normal(e), nb = b.height_field.normal(e);
     Vec3 next;
     if(!closest_on_plane_intersection(e, fa, na, fb, nb, next))
       return false;
@@ -385,7 +389,7 @@ inline bool project_on_edge(const Rmls_surface& a, const Rmls_surface& b, const 
     e = next;
     if(step < step_tolerance)
     {
-      normals = {{a.fit.normal(e), b.fit.normal(e)}};
+      normals = {{a.height_field.normal(e), b.height_field.normal(e)}};
       return true;
     }
   }
@@ -403,9 +407,9 @@ inline bool project_on_corner(const Rmls_surface* s[3], const Vec3& start, doubl
     Vec3 rhs;
     for(int i = 0; i < 3; ++i)
     {
-      const Vec3 n = s[i]->fit.normal(c);
+      const Vec3 n = s[i]->height_field.normal(c);
       m.row(i) = n.transpose();
-      rhs[i] = n.dot(s[i]->fit.foot(c));
+      rhs[i] = n.dot(s[i]->height_field.foot(c));
     }
     if(std::abs(m.determinant()) < 1e-3)
       return false;
@@ -417,7 +421,7 @@ inline bool project_on_corner(const Rmls_surface* s[3], const Vec3& start, doubl
     if(step < step_tolerance)
     {
       for(int i = 0; i < 3; ++i)
-        normals[i] = s[i]->fit.normal(c);
+        normals[i] = s[i]->height_field.normal(c);
       return true;
     }
   }
@@ -440,29 +444,29 @@ inline double distance_to_members(const Forward_search& search, const Rmls_surfa
 
 /// Degree of the final surface fits: the user's jet degree, but planes when the noise dominates
 /// the sampling (a quadric then fits the noise and bends across the crease).
-inline int surface_degree(const Scales& scales, const Settings& settings)
+inline int surface_degree(const Scales& scales, const Projection_parameters& parameters)
 {
-  return noise_dominates(scales) ? 1 : settings.degree_fitting;
+  return noise_dominates(scales) ? 1 : parameters.degree_fitting;
 }
 
 /// The distinct smooth surfaces around the candidate `p`, whose neighbourhood is in
 /// `search.local`: the forward search, nearly parallel surfaces merged, and the competitive
 /// refinement. Fewer than two surfaces means no feature at `p`.
 inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, const Vec3& p,
-                                                      const Scales& scales, const Settings& settings)
+                                                      const Scales& scales, const Projection_parameters& parameters)
 {
-  typedef Forward_search_constants C;
-  const int degree = surface_degree(scales, settings);
+  typedef Forward_search_constants Constants;
+  const int degree = surface_degree(scales, parameters);
   search.run(scales.rmls_tolerance, degree);
-  const double cos_sharp = std::cos(radians(settings.sharpness_angle));
+  const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
   std::vector<Rmls_surface*> distinct;
   for(Rmls_surface& s : search.surfaces)
   {
-    const Vec3 n = s.fit.normal(p);
+    const Vec3 n = s.height_field.normal(p);
     bool parallel = false;
     for(const Rmls_surface* d : distinct)
-      parallel = parallel || std::abs(d->fit.normal(p).dot(n)) > cos_sharp;
+      parallel = parallel || std::abs(d->height_field.normal(p).dot(n)) > cos_sharp;
     if(!parallel)
       distinct.push_back(&s);
   }
@@ -470,7 +474,7 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
     search.refine(distinct, scales.rmls_tolerance, degree, p);
   std::vector<const Rmls_surface*> kept;
   for(const Rmls_surface* s : distinct)
-    if(s->members.size() >= C::min_surface_points)
+    if(s->members.size() >= Constants::min_surface_points)
       kept.push_back(s);
   if(kept.size() < 2)
     kept.clear();
@@ -483,20 +487,20 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
 /// if a third one meets them.
 inline Projection project_on_surfaces(const Forward_search& search, std::vector<const Rmls_surface*> distinct,
                                       const Vec3& p, std::size_t source, const Scales& scales,
-                                      const Settings& settings)
+                                      const Projection_parameters& parameters)
 {
-  typedef Forward_search_constants C;
+  typedef Forward_search_constants Constants;
   Projection result;
   const double radius = search.radius();
-  const double cos_sharp = std::cos(radians(settings.sharpness_angle));
-  const double step_tolerance = C::newton_step_tolerance * scales.spacing;
+  const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
+  const double step_tolerance = Constants::newton_step_tolerance * scales.spacing;
   // The surfaces closest to the point define its edge (and corner).
   std::stable_sort(distinct.begin(), distinct.end(), [&](const Rmls_surface* a, const Rmls_surface* b) {
-    return a->fit.residual(p) < b->fit.residual(p);
+    return a->height_field.residual(p) < b->height_field.residual(p);
   });
 
   auto supported = [&](const Rmls_surface& s, const Vec3& q) {
-    return distance_to_members(search, s, q) <= C::max_support_gap * radius;
+    return distance_to_members(search, s, q) <= Constants::max_support_gap * radius;
   };
   auto others_centroid = [&](const Rmls_surface* self, const Rmls_surface* const* set, int count) {
     Vec3 sum = Vec3::Zero();
@@ -514,7 +518,7 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
   std::array<Vec3, 2> en;
   const Rmls_surface* pair[2] = {distinct[0], distinct[1]};
   if(project_on_edge(*pair[0], *pair[1], p, step_tolerance, e, en)
-     && (e - p).norm() <= C::max_offset * radius
+     && (e - p).norm() <= Constants::max_offset * radius
      && std::abs(en[0].dot(en[1])) <= cos_sharp
      && supported(*pair[0], e) && supported(*pair[1], e))
   {
@@ -531,7 +535,7 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
   Vec3 c;
   std::array<Vec3, 3> cn;
   if(project_on_corner(triple, p, step_tolerance, c, cn)
-     && (c - p).norm() <= C::max_offset * radius
+     && (c - p).norm() <= Constants::max_offset * radius
      && std::abs(cn[0].dot(cn[2])) <= cos_sharp && std::abs(cn[1].dot(cn[2])) <= cos_sharp
      && supported(*triple[0], c) && supported(*triple[1], c) && supported(*triple[2], c))
   {
@@ -548,20 +552,20 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
 /// Groups corner points closer than the corner radius; in each group the member closest to the
 /// weighted average survives (paper 3.3). Groups with fewer than `min_members` are dropped
 /// as isolated three-surface splits.
-inline std::vector<Corner_sample> group_corner_points(std::vector<Corner_sample> corners, double radius)
+inline std::vector<Working_corner_point> group_corner_points(std::vector<Working_corner_point> corners, double radius)
 {
   const std::size_t min_members = 3;
-  std::stable_sort(corners.begin(), corners.end(), [](const Corner_sample& a, const Corner_sample& b) {
+  std::stable_sort(corners.begin(), corners.end(), [](const Working_corner_point& a, const Working_corner_point& b) {
     return a.weight > b.weight;
   });
   std::vector<Vec3> points;
-  for(const Corner_sample& c : corners)
+  for(const Working_corner_point& c : corners)
     points.push_back(c.point);
   Point_index index;
   index.build<CGAL::Sequential_tag>(points);
   std::vector<bool> grouped(corners.size(), false);
   std::vector<std::size_t> group;
-  std::vector<Corner_sample> kept;
+  std::vector<Working_corner_point> kept;
   for(std::size_t i = 0; i < corners.size(); ++i)
   {
     if(grouped[i])
@@ -601,7 +605,7 @@ inline bool surfaces_explain(const Forward_search& search, const std::vector<con
 {
   auto explained = [&](const Vec3& x) {
     for(const Rmls_surface* s : surfaces)
-      if(s->fit.residual(x) <= tolerance)
+      if(s->height_field.residual(x) <= tolerance)
         return true;
     return false;
   };
@@ -685,11 +689,12 @@ inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const s
 /// every point in spatial order). Returns false if cancelled.
 template <typename ConcurrencyTag>
 bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& candidates,
-                  const std::vector<double>& residuals, const Scales& scales, const Settings& settings,
-                  Progress progress, Feature_samples& out)
+                  const std::vector<double>& residuals, const Scales& scales, const Projection_parameters& parameters,
+                  Progress progress, Working_feature_points& out)
 {
   const std::vector<Vec3>& points = input.points;
-  out = Feature_samples();
+  out = Working_feature_points();
+  out.scales = scales;
   if(scales.rmls_neighbors == 0)
     return progress.report(1.);
   // On noisy data each candidate searches its own surfaces: its edge point is then an
@@ -707,12 +712,12 @@ bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& ca
          search.local.clear();
          for(std::size_t j : neighbors)
            search.local.push_back(points[j]);
-         return find_surfaces(search, points[position], scales, settings);
+         return find_surfaces(search, points[position], scales, parameters);
        };
        auto project = [&](std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces) {
          const std::size_t q = cells.member(cell, rank);
          projections[cells.start[cell] + rank] =
-           project_on_surfaces(search, surfaces, points[q], input.input_index[q], scales, settings);
+           project_on_surfaces(search, surfaces, points[q], input.input_index[q], scales, parameters);
        };
        for(std::size_t cell = first; cell < last; ++cell)
        {
@@ -748,16 +753,16 @@ bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& ca
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells.members[a] < cells.members[b]; });
 
-  std::vector<Corner_sample> corners;
+  std::vector<Working_corner_point> corners;
   for(std::size_t i : order)
   {
     const Projection& pr = projections[i];
     if(pr.has_edge)
-      out.edges.push_back(pr.edge);
+      out.edge_points.push_back(pr.edge);
     if(pr.has_corner)
       corners.push_back(pr.corner);
   }
-  out.corners = group_corner_points(std::move(corners), scales.corner_radius);
+  out.corner_points = group_corner_points(std::move(corners), scales.corner_radius);
   return true;
 }
 

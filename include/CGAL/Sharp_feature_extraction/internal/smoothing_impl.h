@@ -9,8 +9,10 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
-#include <CGAL/Sharp_feature_extraction/internal/Settings.h>
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
 #include <Eigen/Dense>
 
@@ -35,7 +37,7 @@ struct Smoothing_constants
 
 /// Neighbours of edge point `i` that lie on the same crease and on the same side of the
 /// nearest corner, nearest first.
-inline void same_crease_neighbors(const std::vector<Edge_sample>& edges, const Point_index& index,
+inline void same_crease_neighbors(const std::vector<Working_edge_point>& edges, const Point_index& index,
                                   const Point_index& corner_index, const std::vector<Vec3>& corners,
                                   std::size_t i, std::vector<std::size_t>& scratch,
                                   std::vector<std::size_t>& out)
@@ -56,52 +58,38 @@ inline void same_crease_neighbors(const std::vector<Edge_sample>& edges, const P
       out.push_back(j);
 }
 
-/// Principal direction of the first `count` points of `set`; returns the share of the
-/// largest eigenvalue.
-inline double principal_line(const std::vector<Edge_sample>& edges, const std::vector<std::size_t>& set,
+/// Principal line of the first `count` points of `set`; returns the share of the largest
+/// variance.
+inline double principal_line(const std::vector<Working_edge_point>& edges, const std::vector<std::size_t>& set,
                              std::size_t count, Vec3& centroid, Vec3& direction)
 {
-  centroid = Vec3::Zero();
-  for(std::size_t j = 0; j < count; ++j)
-    centroid += edges[set[j]].point;
-  centroid /= double(count);
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for(std::size_t j = 0; j < count; ++j)
-  {
-    const Vec3 d = edges[set[j]].point - centroid;
-    covariance.noalias() += d * d.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(covariance);
-  direction = solver.eigenvectors().col(2).normalized();
-  const double total = solver.eigenvalues().sum();
-  return total > 0 ? solver.eigenvalues()[2] / total : 0;
+  return fit_principal_line(count, [&](std::size_t j) -> const Vec3& { return edges[set[j]].point; }, centroid, direction);
 }
 
 /// Stage 3. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool smooth_edge_points(Feature_samples& features, const Settings& settings, Progress progress)
+bool smooth_edge_points(Working_feature_points& features, const Smoothing_parameters& parameters, Progress progress)
 {
-  typedef Smoothing_constants C;
-  std::vector<Edge_sample>& edges = features.edges;
+  typedef Smoothing_constants Constants;
+  std::vector<Working_edge_point>& edges = features.edge_points;
   std::vector<Vec3> corners;
-  for(const Corner_sample& c : features.corners)
+  for(const Working_corner_point& c : features.corner_points)
     corners.push_back(c.point);
   Point_index corner_index;
   corner_index.build<CGAL::Sequential_tag>(corners);
   const double cos_same = std::cos(radians(same_crease_normal_angle));
 
-  for(unsigned int pass = 0; pass < settings.smoothing_passes; ++pass)
+  for(unsigned int pass = 0; pass < parameters.passes; ++pass)
   {
     std::vector<Vec3> positions;
-    for(const Edge_sample& e : edges)
+    for(const Working_edge_point& e : edges)
       positions.push_back(e.point);
     Point_index index;
     index.build<ConcurrencyTag>(positions);
-    std::vector<Edge_sample> next = edges;
-    const bool last_pass = pass + 1 == settings.smoothing_passes;
-    Progress pass_progress = progress.sub(double(pass) / settings.smoothing_passes,
-                                          double(pass + 1) / settings.smoothing_passes);
+    std::vector<Working_edge_point> next = edges;
+    const bool last_pass = pass + 1 == parameters.passes;
+    Progress pass_progress = progress.sub(double(pass) / parameters.passes,
+                                          double(pass + 1) / parameters.passes);
     if(!parallel_blocks<ConcurrencyTag>(edges.size(), pass_progress, [&](std::size_t first, std::size_t last) {
          std::vector<std::size_t> scratch, neighbors;
          for(std::size_t i = first; i < last; ++i)
@@ -110,12 +98,12 @@ bool smooth_edge_points(Feature_samples& features, const Settings& settings, Pro
            if(neighbors.size() < 3)
              continue;
            // Adaptive growth: the smallest neighbourhood that is clearly along a line.
-           std::size_t count = (std::min)(C::initial_neighbors, neighbors.size());
+           std::size_t count = (std::min)(Constants::initial_neighbors, neighbors.size());
            Vec3 centroid, direction;
            double linearity = principal_line(edges, neighbors, count, centroid, direction);
-           while(linearity < C::linearity && count < (std::min)(C::max_neighbors, neighbors.size()))
+           while(linearity < Constants::linearity && count < (std::min)(Constants::max_neighbors, neighbors.size()))
            {
-             count = (std::min)(count + C::neighbor_increment, (std::min)(C::max_neighbors, neighbors.size()));
+             count = (std::min)(count + Constants::neighbor_increment, (std::min)(Constants::max_neighbors, neighbors.size()));
              linearity = principal_line(edges, neighbors, count, centroid, direction);
            }
            const Vec3& p = edges[i].point;
@@ -140,6 +128,18 @@ bool smooth_edge_points(Feature_samples& features, const Settings& settings, Pro
     edges.swap(next);
   }
   return progress.report(1.);
+}
+
+/// Stage 3 on the user's feature points (converted to the working traits and back).
+template <typename ConcurrencyTag, typename GT>
+bool smooth_feature_point_set(Feature_point_set<GT>& features, const Smoothing_parameters& parameters,
+                              const Progress_callback& callback)
+{
+  Working_feature_points working = convert_feature_points<Working_traits>(features);
+  if(!smooth_edge_points<ConcurrencyTag>(working, parameters, Progress(callback)))
+    return false;
+  features = convert_feature_points<GT>(working);
+  return true;
 }
 
 } // namespace internal

@@ -1,13 +1,14 @@
 // Copyright (c) 2026 The Sharp_feature_extraction authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Between the user's kernel types and the pipeline's double-precision working types.
+// The input points as the stages search them: read through the user's point map, checked,
+// duplicates merged, in spatial order, with their spatial index.
 
-#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CONVERSIONS_H
-#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_CONVERSIONS_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_INDEXED_INPUT_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_INDEXED_INPUT_H
 
-#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
 #include <CGAL/hilbert_sort.h>
@@ -21,8 +22,7 @@
 #endif
 
 #include <algorithm>
-#include <cmath>
-#include <numeric>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -31,24 +31,6 @@
 namespace CGAL {
 namespace Sharp_feature_extraction {
 namespace internal {
-
-template <typename Point>
-Vec3 to_vec3(const Point& p)
-{
-  return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
-template <typename GT>
-typename GT::Point_3 to_point(const Vec3& v)
-{
-  return typename GT::Point_3(v.x(), v.y(), v.z());
-}
-
-template <typename GT>
-typename GT::Vector_3 to_vector(const Vec3& v)
-{
-  return typename GT::Vector_3(v.x(), v.y(), v.z());
-}
 
 /// Copies the input points, rejecting non-finite coordinates with `std::invalid_argument`.
 template <typename PointRange, typename PointMap>
@@ -222,129 +204,6 @@ void index_input_points(const PointRange& points, const NamedParameters& np, Ind
       out.position_of_input[j] = out.position_of_input[first[j]];
   read = std::vector<Vec3>();
   out.index.template build<ConcurrencyTag>(out.points);
-}
-
-template <typename FT>
-Sharp_feature_scales<FT> to_public(const Scales& s)
-{
-  Sharp_feature_scales<FT> out;
-  out.spacing = FT(s.spacing);
-  out.noise = FT(s.noise);
-  out.candidate_neighbors = s.candidate_neighbors;
-  out.rmls_neighbors = s.rmls_neighbors;
-  out.residual_threshold = FT(s.residual_threshold);
-  out.rmls_tolerance = FT(s.rmls_tolerance);
-  out.corner_radius = FT(s.corner_radius);
-  out.growth_radius = FT(s.growth_radius);
-  out.completion_distance = FT(s.completion_distance);
-  return out;
-}
-
-template <typename FT>
-Scales to_internal(const Sharp_feature_scales<FT>& s)
-{
-  Scales out;
-  out.spacing = CGAL::to_double(s.spacing);
-  out.noise = CGAL::to_double(s.noise);
-  out.candidate_neighbors = s.candidate_neighbors;
-  out.rmls_neighbors = s.rmls_neighbors;
-  out.residual_threshold = CGAL::to_double(s.residual_threshold);
-  out.rmls_tolerance = CGAL::to_double(s.rmls_tolerance);
-  out.corner_radius = CGAL::to_double(s.corner_radius);
-  out.growth_radius = CGAL::to_double(s.growth_radius);
-  out.completion_distance = CGAL::to_double(s.completion_distance);
-  return out;
-}
-
-template <typename GT>
-Feature_point_set<GT> to_public(const Feature_samples& f, const Scales& scales)
-{
-  Feature_point_set<GT> out;
-  for(const Edge_sample& e : f.edges)
-    out.edge_points.push_back(Edge_point<GT>{to_point<GT>(e.point),
-                                             {{to_vector<GT>(e.normals[0]), to_vector<GT>(e.normals[1])}},
-                                             e.source});
-  for(const Corner_sample& c : f.corners)
-    out.corner_points.push_back(Corner_point<GT>{
-      to_point<GT>(c.point),
-      {{to_vector<GT>(c.normals[0]), to_vector<GT>(c.normals[1]), to_vector<GT>(c.normals[2])}},
-      typename GT::FT(c.weight), c.source});
-  out.scales = to_public<typename GT::FT>(scales);
-  return out;
-}
-
-template <typename GT>
-Feature_samples to_internal(const Feature_point_set<GT>& f)
-{
-  Feature_samples out;
-  for(const Edge_point<GT>& e : f.edge_points)
-    out.edges.push_back(Edge_sample{to_vec3(e.point), {{to_vec3(e.normals[0]), to_vec3(e.normals[1])}}, e.source});
-  for(const Corner_point<GT>& c : f.corner_points)
-    out.corners.push_back(Corner_sample{to_vec3(c.point),
-                                        {{to_vec3(c.normals[0]), to_vec3(c.normals[1]), to_vec3(c.normals[2])}},
-                                        CGAL::to_double(c.weight), c.source});
-  return out;
-}
-
-/// Public network. Shared corner points and closed loops stay exact: every occurrence of a
-/// point is converted from the same double triple, and conversion is deterministic.
-template <typename GT>
-Feature_curve_network<GT> to_public(const Curve_network& net, const Scales& scales)
-{
-  Feature_curve_network<GT> out;
-  for(const Corner_node& k : net.corners)
-  {
-    Feature_corner<GT> corner;
-    corner.point = to_point<GT>(k.point);
-    for(const Vec3& n : k.normals)
-      corner.normals.push_back(to_vector<GT>(n));
-    out.corners.push_back(corner);
-  }
-  for(std::size_t c = 0; c < net.curves.size(); ++c)
-  {
-    const Curve& curve = net.curves[c];
-    Feature_polyline<GT> p;
-    for(const Vec3& v : curve.points)
-      p.points.push_back(to_point<GT>(v));
-    for(const std::array<Vec3, 2>& n : curve.normals)
-      p.normals.push_back({{to_vector<GT>(n[0]), to_vector<GT>(n[1])}});
-    p.front_corner = curve.front_corner == no_index ? Feature_polyline<GT>::no_corner : curve.front_corner;
-    p.back_corner = curve.back_corner == no_index ? Feature_polyline<GT>::no_corner : curve.back_corner;
-    if(curve.front_corner != no_index)
-      out.corners[curve.front_corner].incident_polylines.push_back(c);
-    if(curve.back_corner != no_index && curve.back_corner != curve.front_corner)
-      out.corners[curve.back_corner].incident_polylines.push_back(c);
-    out.polylines.push_back(std::move(p));
-  }
-  out.scales = to_public<typename GT::FT>(scales);
-  return out;
-}
-
-template <typename GT>
-Curve_network to_internal(const Feature_curve_network<GT>& net)
-{
-  Curve_network out;
-  for(const Feature_corner<GT>& k : net.corners)
-  {
-    Corner_node node;
-    node.point = to_vec3(k.point);
-    for(const auto& n : k.normals)
-      node.normals.push_back(to_vec3(n));
-    out.corners.push_back(node);
-  }
-  for(const Feature_polyline<GT>& p : net.polylines)
-  {
-    Curve c;
-    for(const auto& v : p.points)
-      c.points.push_back(to_vec3(v));
-    for(const auto& n : p.normals)
-      c.normals.push_back({{to_vec3(n[0]), to_vec3(n[1])}});
-    c.front_corner = p.front_corner == Feature_polyline<GT>::no_corner ? no_index : p.front_corner;
-    c.back_corner = p.back_corner == Feature_polyline<GT>::no_corner ? no_index : p.back_corner;
-    c.closed = p.is_closed() && c.front_corner == no_index;
-    out.curves.push_back(std::move(c));
-  }
-  return out;
 }
 
 } // namespace internal

@@ -1,0 +1,337 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_SHARP_FEATURE_EXTRACTION_CONTEXT_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_SHARP_FEATURE_EXTRACTION_CONTEXT_H
+
+#include <CGAL/Sharp_feature_extraction/Sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Indexed_input.h>
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/completion_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/polyline_growing_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/rmls_projection_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/smoothing_impl.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/tags.h>
+
+#include <cstddef>
+#include <stdexcept>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// The extraction context: a point cloud prepared once for the five stages of Daniels et al.
+/// 2007, with one member function per stage and one for the whole pipeline.
+///
+/// Building it reads the points through the point map (rejecting non-finite coordinates),
+/// merges exact duplicates (every copy of a point takes the results of the first one: copies
+/// add no surface information), sorts the distinct points along a Hilbert curve, builds their
+/// spatial index (a k-d tree) and estimates every scale of the pipeline from the data (see
+/// `Sharp_feature_scales` and `estimate_sharp_feature_scales()`). The stages then share that
+/// index and those scales.
+///
+/// Each stage reads its own parameters only. The named parameters given to the constructor
+/// fix the scales and set the defaults of every stage's parameters; those given to a member
+/// function override them for that call. A member function given a parameter that does not
+/// belong to its stage, or a scale (which the context fixed), does not compile.
+///
+/// Stages 2 to 5 read the scales of their input (`Candidate_points::scales`,
+/// `Feature_point_set::scales`, `Feature_curve_network::scales`), which stage 1 copies from
+/// the context; a user who edits them there changes what the later stages do.
+///
+/// The member functions are `const` and may be called from several threads at once.
+///
+/// \tparam GeomTraits a CGAL kernel: the type of the results (`Point_3`, `Vector_3`, `FT`).
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///   `CGAL::Parallel_if_available_tag`. The results do not depend on the number of threads.
+template <typename GeomTraits, typename ConcurrencyTag = CGAL::Parallel_if_available_tag>
+class Sharp_feature_extraction_context
+{
+public:
+  /// The number type of the results.
+  typedef typename GeomTraits::FT FT;
+
+  /// Prepares `points` and estimates the scales.
+  ///
+  /// \param points a model of `ConstRange` whose value type is the key of `point_map`; no
+  ///   normals are needed. A cloud with fewer than 20 distinct points, or without extent, gets
+  ///   zero scales and yields no features.
+  /// \param np optional named parameters: `point_map` (default: identity), `geom_traits`, the
+  ///   scales (`Sharp_feature_extraction::parameters::candidate_neighbors`, `rmls_neighbors`,
+  ///   `rmls_tolerance`, `corner_radius`, `growth_radius`, `completion_distance`; see
+  ///   `estimate_sharp_feature_scales()`), and the parameters of every stage, which become the
+  ///   defaults of the member functions (`degree_fitting`, `threshold_distance`,
+  ///   `sharpness_angle`, `number_of_iterations`, `maximum_angle`,
+  ///   `number_of_relaxation_steps`, `callback`: see the stage functions).
+  /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
+  template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+  explicit Sharp_feature_extraction_context(const PointRange& points,
+                                            const NamedParameters& np = parameters::default_values())
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    read_stage_parameters(np);
+    index(points, np);
+    Sharp_feature_extraction::internal::estimate_scales<ConcurrencyTag>(
+      m_input, Sharp_feature_extraction::internal::read_scale_parameters(np),
+      Sharp_feature_extraction::internal::Progress(), m_scales);
+    m_construction_time = timer.time();
+  }
+
+  /// Prepares `points` with known scales (from an earlier context or run on the same points,
+  /// possibly edited): the estimation is skipped. Named parameters as for the other
+  /// constructor; a scale among them replaces the one in `scales` (the others stay as given).
+  template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+  Sharp_feature_extraction_context(const PointRange& points, const Sharp_feature_scales<FT>& scales,
+                                   const NamedParameters& np = parameters::default_values())
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    read_stage_parameters(np);
+    index(points, np);
+    m_scales = Sharp_feature_extraction::internal::convert_scales<double>(scales);
+    Sharp_feature_extraction::internal::override_scales(np, m_scales);
+    m_construction_time = timer.time();
+  }
+
+  /// The scales estimated from the points, or given.
+  Sharp_feature_scales<FT> scales() const
+  {
+    return Sharp_feature_extraction::internal::convert_scales<FT>(m_scales);
+  }
+
+  /// The number of input points, copies included.
+  std::size_t number_of_points() const { return m_input.input_size(); }
+
+  /// The number of distinct input points.
+  std::size_t number_of_distinct_points() const { return m_input.points.size(); }
+
+  /// Wall-clock time taken by the constructor, in seconds.
+  double construction_time() const { return m_construction_time; }
+
+  /// Stage 1: see `compute_candidate_points()`. Parameters: `degree_fitting`,
+  /// `threshold_distance`, `callback`.
+  /// \returns `false` if the callback interrupted the computation.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool compute_candidate_points(Candidate_points<GeomTraits>& candidates,
+                                const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::sharpness_angle_t,
+                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+                  "compute_candidate_points: a parameter of another stage, or a scale (the context fixed those of stage 1)");
+    sfe::Candidate_output out;
+    const bool completed = sfe::compute_candidates<ConcurrencyTag>(
+      m_input, m_scales, sfe::read_candidate_parameters(np, m_candidate_parameters),
+      sfe::Progress(sfe::read_callback(np, m_callback)), out);
+    candidates = sfe::to_input_order<GeomTraits>(m_input, out);
+    return completed;
+  }
+
+  /// Stage 2: see `rmls_project_candidates()`, with the scales of `candidates`. Parameters:
+  /// `degree_fitting`, `sharpness_angle`, `callback`, and this stage's scales
+  /// (`rmls_neighbors`, `rmls_tolerance`, `corner_radius`), which replace those of `candidates`.
+  /// \returns `false` if the callback interrupted the computation.
+  /// \throws std::invalid_argument if a candidate index is out of the range of the points.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool rmls_project_candidates(const Candidate_points<GeomTraits>& candidates, Feature_point_set<GeomTraits>& projected,
+                               const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    namespace own_np = Sharp_feature_extraction::internal_np;
+    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::growth_radius_t,
+                                     own_np::completion_distance_t, CGAL::internal_np::threshold_distance_t,
+                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+                  "rmls_project_candidates: a parameter of another stage");
+    for(std::size_t i : candidates.indices)
+      if(i >= m_input.input_size())
+        throw std::invalid_argument("rmls_project_candidates: candidate index out of range of the points");
+    sfe::Scales scales = sfe::convert_scales<double>(candidates.scales);
+    sfe::override_scales(np, scales);
+    sfe::Working_feature_points out;
+    const bool completed = sfe::rmls_project<ConcurrencyTag>(
+      m_input, m_input.positions(candidates.indices), m_input.in_spatial_order(candidates.residuals),
+      scales, sfe::read_projection_parameters(np, m_projection_parameters),
+      sfe::Progress(sfe::read_callback(np, m_callback)), out);
+    projected = sfe::convert_feature_points<GeomTraits>(out);
+    return completed;
+  }
+
+  /// Stage 3: see `smooth_feature_points()`. Parameters: `number_of_iterations`, `callback`.
+  /// \returns `false` if the callback interrupted the computation (`features` is then unchanged).
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool smooth_feature_points(Feature_point_set<GeomTraits>& features,
+                             const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                     CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+                  "smooth_feature_points: a parameter of another stage, or a scale (fixed by the context)");
+    return sfe::smooth_feature_point_set<ConcurrencyTag>(features, sfe::read_smoothing_parameters(np, m_smoothing_parameters),
+                                                         sfe::read_callback(np, m_callback));
+  }
+
+  /// Stage 4: see `grow_feature_polylines()`, with the growth radius of `features.scales`.
+  /// Parameters: `callback`, and `growth_radius`, which replaces that of `features.scales`.
+  /// \returns `false` if the callback interrupted the computation.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features, Feature_curve_network<GeomTraits>& network,
+                              const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    namespace own_np = Sharp_feature_extraction::internal_np;
+    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                                     own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::completion_distance_t,
+                                     CGAL::internal_np::degree_fitting_t,
+                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+                  "grow_feature_polylines: a parameter of another stage");
+    return sfe::grow_feature_curve_network(features, network, np, sfe::read_callback(np, m_callback));
+  }
+
+  /// Stage 5: see `complete_feature_polylines()`, with the scales of `network.scales`.
+  /// Parameters: `maximum_angle`, `number_of_relaxation_steps`, and `completion_distance`,
+  /// which replaces that of `network.scales`.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
+                                  const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    namespace own_np = Sharp_feature_extraction::internal_np;
+    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                                     own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::growth_radius_t,
+                                     CGAL::internal_np::degree_fitting_t,
+                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::callback_t>(),
+                  "complete_feature_polylines: a parameter of another stage");
+    sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np, m_completion_parameters));
+  }
+
+  /// The five stages: see `extract_sharp_features()`. Parameters: those of every stage (not
+  /// the scales, which the context fixed).
+  /// \returns `false` if the callback interrupted the computation (the result is then partial).
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool extract_sharp_features(Sharp_features<GeomTraits>& result,
+                              const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS>(),
+                  "extract_sharp_features: the scales are fixed by the context; give them to its constructor");
+    return run_pipeline(result, sfe::read_candidate_parameters(np, m_candidate_parameters),
+                        sfe::read_projection_parameters(np, m_projection_parameters),
+                        sfe::read_smoothing_parameters(np, m_smoothing_parameters),
+                        sfe::read_completion_parameters(np, m_completion_parameters),
+                        sfe::read_callback(np, m_callback));
+  }
+
+private:
+  Sharp_feature_extraction::internal::Indexed_input m_input;
+  Sharp_feature_extraction::internal::Scales m_scales;
+  Sharp_feature_extraction::internal::Candidate_parameters m_candidate_parameters;
+  Sharp_feature_extraction::internal::Projection_parameters m_projection_parameters;
+  Sharp_feature_extraction::internal::Smoothing_parameters m_smoothing_parameters;
+  Sharp_feature_extraction::internal::Completion_parameters m_completion_parameters;
+  Sharp_feature_extraction::internal::Progress_callback m_callback;
+  double m_construction_time = 0;
+
+  template <typename NamedParameters>
+  void read_stage_parameters(const NamedParameters& np)
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    m_candidate_parameters = sfe::read_candidate_parameters(np);
+    m_projection_parameters = sfe::read_projection_parameters(np);
+    m_smoothing_parameters = sfe::read_smoothing_parameters(np);
+    m_completion_parameters = sfe::read_completion_parameters(np);
+    m_callback = sfe::read_callback(np);
+  }
+
+  template <typename PointRange, typename NamedParameters>
+  void index(const PointRange& points, const NamedParameters& np)
+  {
+    Sharp_feature_extraction::internal::index_input_points<ConcurrencyTag>(points, np, m_input);
+  }
+
+  bool run_pipeline(Sharp_features<GeomTraits>& result,
+                    const Sharp_feature_extraction::internal::Candidate_parameters& candidate_parameters,
+                    const Sharp_feature_extraction::internal::Projection_parameters& projection_parameters,
+                    const Sharp_feature_extraction::internal::Smoothing_parameters& smoothing_parameters,
+                    const Sharp_feature_extraction::internal::Completion_parameters& completion_parameters,
+                    const Sharp_feature_extraction::internal::Progress_callback& callback) const;
+};
+
+namespace Sharp_feature_extraction {
+namespace internal {
+
+/// Share of the progress range given to each stage (stage 1 and 2 dominate).
+constexpr double progress_end_of_stage[5] = {0.35, 0.9, 0.97, 0.99, 1.0};
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+
+template <typename GeomTraits, typename ConcurrencyTag>
+bool Sharp_feature_extraction_context<GeomTraits, ConcurrencyTag>::run_pipeline(
+  Sharp_features<GeomTraits>& result,
+  const Sharp_feature_extraction::internal::Candidate_parameters& candidate_parameters,
+  const Sharp_feature_extraction::internal::Projection_parameters& projection_parameters,
+  const Sharp_feature_extraction::internal::Smoothing_parameters& smoothing_parameters,
+  const Sharp_feature_extraction::internal::Completion_parameters& completion_parameters,
+  const Sharp_feature_extraction::internal::Progress_callback& callback) const
+{
+  namespace sfe = Sharp_feature_extraction::internal;
+  using sfe::progress_end_of_stage;
+  result = Sharp_features<GeomTraits>();
+  result.timings.context = m_construction_time;
+  sfe::Progress progress(callback);
+  CGAL::Real_timer timer;
+
+  timer.start();
+  sfe::Candidate_output candidates;
+  if(!sfe::compute_candidates<ConcurrencyTag>(m_input, m_scales, candidate_parameters,
+                                              progress.sub(0, progress_end_of_stage[0]), candidates))
+    return false;
+  result.candidates = sfe::to_input_order<GeomTraits>(m_input, candidates);
+  result.timings.candidates = timer.time();
+
+  timer.reset();
+  sfe::Working_feature_points features;
+  if(!sfe::rmls_project<ConcurrencyTag>(m_input, candidates.candidates, candidates.residuals, candidates.scales,
+                                        projection_parameters,
+                                        progress.sub(progress_end_of_stage[0], progress_end_of_stage[1]), features))
+    return false;
+  result.projected = sfe::convert_feature_points<GeomTraits>(features);
+  result.timings.projection = timer.time();
+
+  timer.reset();
+  if(!sfe::smooth_edge_points<ConcurrencyTag>(features, smoothing_parameters,
+                                              progress.sub(progress_end_of_stage[1], progress_end_of_stage[2])))
+    return false;
+  result.smoothed = sfe::convert_feature_points<GeomTraits>(features);
+  result.timings.smoothing = timer.time();
+
+  timer.reset();
+  sfe::Progress growing = progress.sub(progress_end_of_stage[2], progress_end_of_stage[3]);
+  sfe::Working_network network = sfe::grow_polylines(features, growing);
+  if(growing.cancelled())
+    return false;
+  result.grown = sfe::convert_network<GeomTraits>(network);
+  result.timings.growing = timer.time();
+
+  timer.reset();
+  sfe::complete_polylines(network, completion_parameters);
+  result.network = sfe::convert_network<GeomTraits>(network);
+  result.timings.completion = timer.time();
+  return progress.report(1.);
+}
+
+} // namespace CGAL
+
+#endif
