@@ -61,13 +61,112 @@ public:
   /// \param points a model of `ConstRange` whose value type is the key of `point_map`; no
   ///   normals are needed. A cloud with fewer than 20 distinct points, or without extent, gets
   ///   zero scales and yields no features.
-  /// \param np optional named parameters: `point_map` (default: identity), `geom_traits`, the
-  ///   scales (`Sharp_feature_extraction::parameters::candidate_neighbors`, `rmls_neighbors`,
-  ///   `rmls_tolerance`, `corner_radius`, `growth_radius`, `completion_distance`; see
-  ///   `estimate_sharp_feature_scales()`), and the parameters of every stage, which become the
-  ///   defaults of the member functions (`degree_fitting`, `threshold_distance`,
-  ///   `sharpness_angle`, `number_of_iterations`, `maximum_angle`,
-  ///   `number_of_relaxation_steps`, `callback`: see the stage functions).
+  /// \param np optional named parameters among the ones listed below: the scales, which the
+  ///   context fixes, and the parameters of every stage, which become the defaults of the member
+  ///   functions (a member function given one overrides it for that call).
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{point_map}
+  ///     \cgalParamDescription{a property map associating points to the elements of `points`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `GeomTraits::Point_3`}
+  ///     \cgalParamDefault{`CGAL::Identity_property_map<GeomTraits::Point_3>`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{degree_fitting}
+  ///     \cgalParamDescription{degree of the fitted height fields: 1 (planes) or 2 (quadrics)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{2}
+  ///     \cgalParamExtra{also the degree of the fits that estimate the noise, from which the
+  ///       scales are derived; the default of the member functions that read it (see
+  ///       `CGAL::compute_candidate_points()` and `CGAL::rmls_project_candidates()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{threshold_distance}
+  ///     \cgalParamDescription{the candidate threshold tau (a distance)}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of
+  ///       a stage-1 neighbourhood}
+  ///     \cgalParamExtra{a negative value selects the default; the default of the member functions
+  ///       that read it (see `CGAL::compute_candidate_points()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sharpness_angle}
+  ///     \cgalParamDescription{smallest angle, in degrees, between the normals of two surfaces
+  ///       that meet at a sharp feature}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{25}
+  ///     \cgalParamExtra{must be in (0, 90); the default of the member functions that read it (see
+  ///       `CGAL::rmls_project_candidates()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{number of smoothing passes}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{3}
+  ///     \cgalParamExtra{the default of the member functions that read it (see
+  ///       `CGAL::smooth_feature_points()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_angle}
+  ///     \cgalParamDescription{half-angle, in degrees, of the completion search cone at a free end}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{30}
+  ///     \cgalParamExtra{must be in (0, 90); the default of the member functions that read it (see
+  ///       `CGAL::complete_feature_polylines()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_relaxation_steps}
+  ///     \cgalParamDescription{number of Laplacian smoothing passes over the completed curves}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{2}
+  ///     \cgalParamExtra{the default of the member functions that read it (see
+  ///       `CGAL::complete_feature_polylines()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{none}
+  ///     \cgalParamExtra{not called by the constructor: it becomes the default callback of the
+  ///       member functions of stages 1 to 4 and of `CGAL::extract_sharp_features()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors}
+  ///     \cgalParamDescription{number of points in a stage-1 neighbourhood}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; clamped to [7, number of distinct points]; the
+  ///       scales derived from a given one follow, as `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors}
+  ///     \cgalParamDescription{number of points in a stage-2 (RMLS) neighbourhood}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; clamped to [7, number of distinct points]; the
+  ///       scales derived from a given one follow, as `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance}
+  ///     \cgalParamDescription{largest residual (a distance) of a point that belongs to a smooth
+  ///       surface in the forward search of stage 2}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; the scales derived from a given one follow, as
+  ///       `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius}
+  ///     \cgalParamDescription{corner points closer than this distance are grouped into one corner
+  ///       (stage 2)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; the scales derived from a given one follow, as
+  ///       `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius}
+  ///     \cgalParamDescription{neighbourhood radius of polyline growing (stage 4)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; the scales derived from a given one follow, as
+  ///       `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance}
+  ///     \cgalParamDescription{largest gap bridged by completion (stage 5)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{derived from the data (see `estimate_sharp_feature_scales()`)}
+  ///     \cgalParamExtra{0 selects the default; the scales derived from a given one follow, as
+  ///       `estimate_sharp_feature_scales()` explains}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   explicit Sharp_feature_extraction_context(const PointRange& points,
@@ -84,8 +183,117 @@ public:
   }
 
   /// Prepares `points` with known scales (from an earlier context or run on the same points,
-  /// possibly edited): the estimation is skipped. Named parameters as for the other
-  /// constructor; a scale among them replaces the one in `scales` (the others stay as given).
+  /// possibly edited): the estimation is skipped.
+  ///
+  /// \param points as for the other constructor.
+  /// \param scales the scales of the context.
+  /// \param np optional named parameters among the ones listed below: the parameters of every
+  ///   stage, as for the other constructor, and the scales, each of which replaces the one in
+  ///   `scales` (the others stay as given).
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{point_map}
+  ///     \cgalParamDescription{a property map associating points to the elements of `points`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `GeomTraits::Point_3`}
+  ///     \cgalParamDefault{`CGAL::Identity_property_map<GeomTraits::Point_3>`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{degree_fitting}
+  ///     \cgalParamDescription{degree of the fitted height fields: 1 (planes) or 2 (quadrics)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{2}
+  ///     \cgalParamExtra{the default of the member functions that read it (see
+  ///       `CGAL::compute_candidate_points()` and `CGAL::rmls_project_candidates()`); the
+  ///       scales are given, so it does not change them}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{threshold_distance}
+  ///     \cgalParamDescription{the candidate threshold tau (a distance)}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of
+  ///       a stage-1 neighbourhood}
+  ///     \cgalParamExtra{a negative value selects the default; the default of the member functions
+  ///       that read it (see `CGAL::compute_candidate_points()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sharpness_angle}
+  ///     \cgalParamDescription{smallest angle, in degrees, between the normals of two surfaces
+  ///       that meet at a sharp feature}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{25}
+  ///     \cgalParamExtra{must be in (0, 90); the default of the member functions that read it (see
+  ///       `CGAL::rmls_project_candidates()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{number of smoothing passes}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{3}
+  ///     \cgalParamExtra{the default of the member functions that read it (see
+  ///       `CGAL::smooth_feature_points()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_angle}
+  ///     \cgalParamDescription{half-angle, in degrees, of the completion search cone at a free end}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{30}
+  ///     \cgalParamExtra{must be in (0, 90); the default of the member functions that read it (see
+  ///       `CGAL::complete_feature_polylines()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_relaxation_steps}
+  ///     \cgalParamDescription{number of Laplacian smoothing passes over the completed curves}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{2}
+  ///     \cgalParamExtra{the default of the member functions that read it (see
+  ///       `CGAL::complete_feature_polylines()`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{none}
+  ///     \cgalParamExtra{not called by the constructor: it becomes the default callback of the
+  ///       member functions of stages 1 to 4 and of `CGAL::extract_sharp_features()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors}
+  ///     \cgalParamDescription{number of points in a stage-1 neighbourhood}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`scales.candidate_neighbors`}
+  ///     \cgalParamExtra{0 keeps `scales.candidate_neighbors`; the other scales do not follow a
+  ///       given one}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors}
+  ///     \cgalParamDescription{number of points in a stage-2 (RMLS) neighbourhood}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`scales.rmls_neighbors`}
+  ///     \cgalParamExtra{0 keeps `scales.rmls_neighbors`; the other scales do not follow a given
+  ///       one}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance}
+  ///     \cgalParamDescription{largest residual (a distance) of a point that belongs to a smooth
+  ///       surface in the forward search of stage 2}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`scales.rmls_tolerance`}
+  ///     \cgalParamExtra{0 keeps `scales.rmls_tolerance`; the other scales do not follow a given
+  ///       one}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius}
+  ///     \cgalParamDescription{corner points closer than this distance are grouped into one corner
+  ///       (stage 2)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`scales.corner_radius`}
+  ///     \cgalParamExtra{0 keeps `scales.corner_radius`; the other scales do not follow a given
+  ///       one}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius}
+  ///     \cgalParamDescription{neighbourhood radius of polyline growing (stage 4)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`scales.growth_radius`}
+  ///     \cgalParamExtra{0 keeps `scales.growth_radius`; the other scales do not follow a given
+  ///       one}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance}
+  ///     \cgalParamDescription{largest gap bridged by completion (stage 5)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`scales.completion_distance`}
+  ///     \cgalParamExtra{0 keeps `scales.completion_distance`; the other scales do not follow a
+  ///       given one}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   Sharp_feature_extraction_context(const PointRange& points, const Sharp_feature_scales<FT>& scales,
                                    const NamedParameters& np = parameters::default_values())
@@ -114,8 +322,35 @@ public:
   /// Wall-clock time taken by the constructor, in seconds.
   double construction_time() const { return m_construction_time; }
 
-  /// Stage 1: see `compute_candidate_points()`. Parameters: `degree_fitting`,
-  /// `threshold_distance`, `callback`.
+  /// Stage 1: see `CGAL::compute_candidate_points()`, with the scales of the context.
+  /// \param candidates receives the residuals, the candidate indices and the scales.
+  /// \param np optional named parameters among the ones listed below; a parameter of another
+  ///   stage, or a scale (which the context fixed), does not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{degree_fitting}
+  ///     \cgalParamDescription{degree of the fitted height fields: 1 (planes) or 2 (quadrics)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 2}
+  ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{threshold_distance}
+  ///     \cgalParamDescription{the candidate threshold tau (a distance)}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise the mean residual of the
+  ///       points whose residual is at most the radius of a stage-1 neighbourhood}
+  ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`; a negative value selects the
+  ///       default}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise none}
+  ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`; called, on the calling thread,
+  ///       with the
+  ///       fraction of the work done (from 0 to 1); when it returns `false` the computation stops
+  ///       and the member function returns `false`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation.
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool compute_candidate_points(Candidate_points<GeomTraits>& candidates,
@@ -134,9 +369,58 @@ public:
     return completed;
   }
 
-  /// Stage 2: see `rmls_project_candidates()`, with the scales of `candidates`. Parameters:
-  /// `degree_fitting`, `sharpness_angle`, `callback`, and this stage's scales
-  /// (`rmls_neighbors`, `rmls_tolerance`, `corner_radius`), which replace those of `candidates`.
+  /// Stage 2: see `CGAL::rmls_project_candidates()`, with the scales of `candidates`.
+  /// \param candidates the output of `compute_candidate_points()` on this context.
+  /// \param projected receives the edge and corner points.
+  /// \param np optional named parameters among the ones listed below; a parameter of another
+  ///   stage does not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{degree_fitting}
+  ///     \cgalParamDescription{degree of the fitted height fields: 1 (planes) or 2 (quadrics)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 2}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sharpness_angle}
+  ///     \cgalParamDescription{smallest angle, in degrees, between the normals of two surfaces
+  ///       that meet at a sharp feature}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 25}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; must be in (0, 90)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise none}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; called, on the calling thread,
+  ///       with the
+  ///       fraction of the work done (from 0 to 1); when it returns `false` the computation stops
+  ///       and the member function returns `false`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors}
+  ///     \cgalParamDescription{number of points in a stage-2 (RMLS) neighbourhood}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{`candidates.scales.rmls_neighbors`}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; 0 keeps
+  ///       `candidates.scales.rmls_neighbors`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance}
+  ///     \cgalParamDescription{largest residual (a distance) of a point that belongs to a smooth
+  ///       surface in the forward search of stage 2}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`candidates.scales.rmls_tolerance`}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; 0 keeps
+  ///       `candidates.scales.rmls_tolerance`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius}
+  ///     \cgalParamDescription{corner points closer than this distance are grouped into one corner
+  ///       (stage 2)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`candidates.scales.corner_radius`}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; 0 keeps
+  ///       `candidates.scales.corner_radius`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation.
   /// \throws std::invalid_argument if a candidate index is out of the range of the points.
   template <typename NamedParameters = parameters::Default_named_parameters>
@@ -164,7 +448,27 @@ public:
     return completed;
   }
 
-  /// Stage 3: see `smooth_feature_points()`. Parameters: `number_of_iterations`, `callback`.
+  /// Stage 3: see `CGAL::smooth_feature_points()`.
+  /// \param features the output of `CGAL::rmls_project_candidates()`, smoothed in place.
+  /// \param np optional named parameters among the ones listed below; a parameter of another
+  ///   stage, or a scale (which the context fixed), does not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{number of smoothing passes}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 3}
+  ///     \cgalParamExtra{see `CGAL::smooth_feature_points()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise none}
+  ///     \cgalParamExtra{see `CGAL::smooth_feature_points()`; called, on the calling thread, with
+  ///       the
+  ///       fraction of the work done (from 0 to 1); when it returns `false` the computation stops
+  ///       and the member function returns `false`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation (`features` is then unchanged).
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool smooth_feature_points(Feature_point_set<GeomTraits>& features,
@@ -179,8 +483,29 @@ public:
                                                          sfe::read_callback(np, m_callback));
   }
 
-  /// Stage 4: see `grow_feature_polylines()`, with the growth radius of `features.scales`.
-  /// Parameters: `callback`, and `growth_radius`, which replaces that of `features.scales`.
+  /// Stage 4: see `CGAL::grow_feature_polylines()`, with the growth radius of `features.scales`.
+  /// \param features the output of `CGAL::smooth_feature_points()`.
+  /// \param network receives the polylines and the corners.
+  /// \param np optional named parameters among the ones listed below; a parameter of another
+  ///   stage does not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise none}
+  ///     \cgalParamExtra{see `CGAL::grow_feature_polylines()`; called, on the calling thread, with
+  ///       the
+  ///       fraction of the work done (from 0 to 1); when it returns `false` the computation stops
+  ///       and the member function returns `false`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius}
+  ///     \cgalParamDescription{neighbourhood radius of polyline growing (stage 4)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`features.scales.growth_radius`}
+  ///     \cgalParamExtra{see `CGAL::grow_feature_polylines()`; 0 keeps
+  ///       `features.scales.growth_radius`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation.
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features, Feature_curve_network<GeomTraits>& network,
@@ -198,9 +523,31 @@ public:
     return sfe::grow_feature_curve_network(features, network, np, sfe::read_callback(np, m_callback));
   }
 
-  /// Stage 5: see `complete_feature_polylines()`, with the scales of `network.scales`.
-  /// Parameters: `maximum_angle`, `number_of_relaxation_steps`, and `completion_distance`,
-  /// which replaces that of `network.scales`.
+  /// Stage 5: see `CGAL::complete_feature_polylines()`, with the scales of `network.scales`.
+  /// \param network the output of `CGAL::grow_feature_polylines()`, completed in place.
+  /// \param np optional named parameters among the ones listed below; a parameter of another
+  ///   stage, and `callback`, do not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{maximum_angle}
+  ///     \cgalParamDescription{half-angle, in degrees, of the search cone at a free end}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 30}
+  ///     \cgalParamExtra{see `CGAL::complete_feature_polylines()`; must be in (0, 90)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_relaxation_steps}
+  ///     \cgalParamDescription{number of Laplacian smoothing passes over the completed curves}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 2}
+  ///     \cgalParamExtra{see `CGAL::complete_feature_polylines()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance}
+  ///     \cgalParamDescription{largest gap bridged by completion (stage 5)}
+  ///     \cgalParamType{`double` (a distance)}
+  ///     \cgalParamDefault{`network.scales.completion_distance`}
+  ///     \cgalParamExtra{see `CGAL::complete_feature_polylines()`; 0 keeps
+  ///       `network.scales.completion_distance`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   template <typename NamedParameters = parameters::Default_named_parameters>
   void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
                                   const NamedParameters& np = parameters::default_values()) const
@@ -216,8 +563,60 @@ public:
     sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np, m_completion_parameters));
   }
 
-  /// The five stages: see `extract_sharp_features()`. Parameters: those of every stage (not
-  /// the scales, which the context fixed).
+  /// The five stages: see `CGAL::extract_sharp_features()`.
+  /// \param result receives the curves, corners, normals and every intermediate point set.
+  /// \param np optional named parameters among the ones listed below: those of every stage; a
+  ///   scale (which the context fixed: give it to the constructor) does not compile.
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{degree_fitting}
+  ///     \cgalParamDescription{degree of the fitted height fields: 1 (planes) or 2 (quadrics)}
+  ///     \cgalParamType{`int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 2}
+  ///     \cgalParamExtra{see `CGAL::compute_candidate_points()` and
+  ///       `CGAL::rmls_project_candidates()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{threshold_distance}
+  ///     \cgalParamDescription{the candidate threshold tau (a distance)}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise the mean residual of the
+  ///       points whose residual is at most the radius of a stage-1 neighbourhood}
+  ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`; a negative value selects the
+  ///       default}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sharpness_angle}
+  ///     \cgalParamDescription{smallest angle, in degrees, between the normals of two surfaces
+  ///       that meet at a sharp feature}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 25}
+  ///     \cgalParamExtra{see `CGAL::rmls_project_candidates()`; must be in (0, 90)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{number of smoothing passes}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 3}
+  ///     \cgalParamExtra{see `CGAL::smooth_feature_points()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_angle}
+  ///     \cgalParamDescription{half-angle, in degrees, of the completion search cone at a free end}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 30}
+  ///     \cgalParamExtra{see `CGAL::complete_feature_polylines()`; must be in (0, 90)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_relaxation_steps}
+  ///     \cgalParamDescription{number of Laplacian smoothing passes over the completed curves}
+  ///     \cgalParamType{`unsigned int`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise 2}
+  ///     \cgalParamExtra{see `CGAL::complete_feature_polylines()`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the value given to the constructor, otherwise none}
+  ///     \cgalParamExtra{see `CGAL::extract_sharp_features()`; called with the fraction of the
+  ///       work of
+  ///       stages 1 to 4 done (from 0 to 1)}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation (the result is then partial).
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool extract_sharp_features(Sharp_features<GeomTraits>& result,

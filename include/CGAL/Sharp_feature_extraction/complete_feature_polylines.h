@@ -35,12 +35,30 @@ namespace CGAL {
 /// their first point exactly; normals are consistent in order and orientation along each curve.
 ///
 /// \param network the output of `grow_feature_polylines()`, completed in place.
-/// \param np optional named parameters:
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage, and `callback` (this stage is short and cannot be interrupted), do not compile.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{maximum_angle} half-angle, in degrees, of the search cone; default: 30. \cgalParamNEnd
-///   \cgalParamNBegin{number_of_relaxation_steps} smoothing passes; default: 2. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance} largest gap
-///     bridged; default: `network.scales.completion_distance`. \cgalParamNEnd
+///   \cgalParamNBegin{maximum_angle}
+///     \cgalParamDescription{half-angle, in degrees, of the search cone at a free end}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{30}
+///     \cgalParamExtra{must be in (0, 90)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_relaxation_steps}
+///     \cgalParamDescription{number of passes of non-shrinking Laplacian smoothing of the interior
+///       vertices of the completed curves}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{2}
+///     \cgalParamExtra{0 leaves the vertices where completion put them}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance}
+///     \cgalParamDescription{largest gap bridged by completion, and the reach of the search cone
+///       at a free end}
+///     \cgalParamType{`double` (a distance)}
+///     \cgalParamDefault{`network.scales.completion_distance`}
+///     \cgalParamExtra{0 keeps the default; a positive value replaces
+///       `network.scales.completion_distance` for this call}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,

@@ -29,16 +29,53 @@ namespace CGAL {
 ///   Exact duplicates are merged before indexing: every copy of a point gets the residual of the
 ///   first copy, and is a candidate when that one is.
 /// \param candidates receives the residuals, the candidate indices and the scales.
-/// \param np optional named parameters among:
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage does not compile.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{point_map} maps a range item to its `Point_3`; default: identity. \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits} an instance of a CGAL kernel; default: the point's kernel. \cgalParamNEnd
-///   \cgalParamNBegin{degree_fitting} degree of the jet (1 or 2); default: 2. \cgalParamNEnd
-///   \cgalParamNBegin{threshold_distance} the residual threshold tau (a distance); default: the mean residual of the points whose residual is at most their neighbourhood's radius (larger ones come from outliers). \cgalParamNEnd
-///   \cgalParamNBegin{callback} a `std::function<bool(double)>` called with the progress in [0,1];
-///     returning `false` stops the computation. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors} stage-1 neighbourhood size;
-///     default: derived (see `estimate_sharp_feature_scales()`). \cgalParamNEnd
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `SharpFeatureExtractionTraits`}
+///     \cgalParamDefault{the kernel of the point type of `point_map`}
+///     \cgalParamExtra{it gives the type of `candidates`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{degree_fitting}
+///     \cgalParamDescription{degree of the jets fitted to the neighbourhoods: 1 (planes) or 2
+///       (quadrics)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{2}
+///     \cgalParamExtra{the jets that estimate the noise, from which the scales are derived, have
+///       this degree too (see `estimate_sharp_feature_scales()`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{threshold_distance}
+///     \cgalParamDescription{the candidate threshold tau: a point whose residual exceeds it is a
+///       candidate}
+///     \cgalParamType{`double` (a distance)}
+///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of a
+///       stage-1 neighbourhood (`Sharp_feature_scales::candidate_radius`; larger residuals come
+///       from outliers)}
+///     \cgalParamExtra{a negative value selects the default; the threshold used is stored in
+///       `candidates.scales.residual_threshold`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{called, on the calling thread, with the fraction of the work done (from 0
+///       to 1); when it returns `false` the computation stops and the function returns `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors}
+///     \cgalParamDescription{number of points in a stage-1 neighbourhood}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{derived from the noise (see `estimate_sharp_feature_scales()`)}
+///     \cgalParamExtra{0 selects the default; clamped to [7, number of distinct points]. The
+///       scales derived from it (`rmls_neighbors`, the growth radius, the completion distance)
+///       follow}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns `false` if the callback interrupted the computation (then `candidates` is incomplete).

@@ -40,41 +40,46 @@ namespace CGAL {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{degree_fitting}
 ///     \cgalParamDescription{degree of the jets whose residuals measure the noise}
-///     \cgalParamType{int, 1 or 2}
+///     \cgalParamType{`int`: 1 or 2}
 ///     \cgalParamDefault{2}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::candidate_neighbors}
 ///     \cgalParamDescription{number of points in a stage-1 neighbourhood}
-///     \cgalParamType{std::size_t}
+///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{derived from the noise, as above}
-///     \cgalParamExtra{clamped to [7, number of distinct points]}
+///     \cgalParamExtra{0 selects the default; clamped to [7, number of distinct points]}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors}
 ///     \cgalParamDescription{number of points in a stage-2 (RMLS) neighbourhood}
-///     \cgalParamType{std::size_t}
+///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{twice `candidate_neighbors`}
-///     \cgalParamExtra{clamped to [7, number of distinct points]}
+///     \cgalParamExtra{0 selects the default; clamped to [7, number of distinct points]}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance}
 ///     \cgalParamDescription{largest residual (a distance) of a point that belongs to a smooth
 ///       surface in the forward search of stage 2}
-///     \cgalParamType{`geom_traits::FT`}
+///     \cgalParamType{`double` (a distance)}
 ///     \cgalParamDefault{2.25 times the noise, at least 5% of the spacing}
+///     \cgalParamExtra{0 selects the default}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius}
-///     \cgalParamDescription{corner points closer than this distance are grouped into one corner (stage 2)}
-///     \cgalParamType{`geom_traits::FT`}
+///     \cgalParamDescription{corner points closer than this distance are grouped into one corner
+///       (stage 2)}
+///     \cgalParamType{`double` (a distance)}
 ///     \cgalParamDefault{the median radius of a stage-2 neighbourhood}
+///     \cgalParamExtra{0 selects the default}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius}
 ///     \cgalParamDescription{neighbourhood radius of polyline growing (stage 4)}
-///     \cgalParamType{`geom_traits::FT`}
+///     \cgalParamType{`double` (a distance)}
 ///     \cgalParamDefault{the median radius of a stage-1 neighbourhood}
+///     \cgalParamExtra{0 selects the default}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Sharp_feature_extraction::parameters::completion_distance}
 ///     \cgalParamDescription{largest gap bridged by completion (stage 5)}
-///     \cgalParamType{`geom_traits::FT`}
+///     \cgalParamType{`double` (a distance)}
 ///     \cgalParamDefault{7 times the spacing, at least 3 times the growth radius}
+///     \cgalParamExtra{0 selects the default}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns the scales (the candidate threshold `residual_threshold` is left 0: stage 1 sets it).

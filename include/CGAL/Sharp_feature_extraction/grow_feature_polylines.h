@@ -24,8 +24,25 @@ namespace CGAL {
 ///
 /// \param features the output of `smooth_feature_points()`.
 /// \param network receives the polylines and the corners.
-/// \param np optional named parameters: `callback`, and
-///   `Sharp_feature_extraction::parameters::growth_radius` (default: `features.scales.growth_radius`).
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage does not compile.
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{called, on the calling thread, with the fraction of the work done (from 0
+///       to 1); when it returns `false` the computation stops and the function returns `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::growth_radius}
+///     \cgalParamDescription{neighbourhood radius of the polyline growing: the next vertex is
+///       searched within this distance}
+///     \cgalParamType{`double` (a distance)}
+///     \cgalParamDefault{`features.scales.growth_radius`}
+///     \cgalParamExtra{0 keeps the default; a positive value replaces
+///       `features.scales.growth_radius` for this call}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation.
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features,

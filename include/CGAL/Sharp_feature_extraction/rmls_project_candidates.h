@@ -38,18 +38,64 @@ namespace CGAL {
 ///   scales are used. The points are indexed again, with these scales: to run several stages
 ///   on the same points, use a `Sharp_feature_extraction_context`.
 /// \param projected receives the edge and corner points.
-/// \param np optional named parameters: `point_map`, `geom_traits`, `callback` as in
-///   `compute_candidate_points()`, and
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage does not compile.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{degree_fitting} degree of the surface fits (1 or 2); default: 2. \cgalParamNEnd
-///   \cgalParamNBegin{sharpness_angle} smallest angle, in degrees, between the normals of two
-///     surfaces that meet at a sharp feature; default: 25. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors} stage-2 neighbourhood
-///     size; default: `candidates.scales.rmls_neighbors`. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance} RMLS tolerance (a
-///     distance); default: `candidates.scales.rmls_tolerance`. \cgalParamNEnd
-///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius} corner grouping radius;
-///     default: `candidates.scales.corner_radius`. \cgalParamNEnd
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `SharpFeatureExtractionTraits`}
+///     \cgalParamDefault{the kernel of the point type of `point_map`}
+///     \cgalParamExtra{it gives the type of `candidates` and `projected`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{degree_fitting}
+///     \cgalParamDescription{degree of the smooth surfaces fitted in the forward search: 1
+///       (planes) or 2 (quadrics)}
+///     \cgalParamType{`int`}
+///     \cgalParamDefault{2}
+///     \cgalParamExtra{on noisy data (a noise scale above 5% of the spacing, see
+///       `Sharp_feature_scales`) the surfaces are planes whatever this value}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sharpness_angle}
+///     \cgalParamDescription{smallest angle, in degrees, between the normals of two surfaces that
+///       meet at a sharp feature; surfaces closer in angle are one surface split by noise}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{25}
+///     \cgalParamExtra{must be in (0, 90)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{called, on the calling thread, with the fraction of the work done (from 0
+///       to 1); when it returns `false` the computation stops and the function returns `false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_neighbors}
+///     \cgalParamDescription{number of points in a stage-2 (RMLS) neighbourhood}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`candidates.scales.rmls_neighbors`}
+///     \cgalParamExtra{0 keeps the default; a positive value replaces
+///       `candidates.scales.rmls_neighbors` for this call}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::rmls_tolerance}
+///     \cgalParamDescription{largest residual (a distance) of a point that belongs to a smooth
+///       surface in the forward search}
+///     \cgalParamType{`double` (a distance)}
+///     \cgalParamDefault{`candidates.scales.rmls_tolerance`}
+///     \cgalParamExtra{0 keeps the default; a positive value replaces
+///       `candidates.scales.rmls_tolerance` for this call}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Sharp_feature_extraction::parameters::corner_radius}
+///     \cgalParamDescription{corner points closer than this distance are grouped into one corner}
+///     \cgalParamType{`double` (a distance)}
+///     \cgalParamDefault{`candidates.scales.corner_radius`}
+///     \cgalParamExtra{0 keeps the default; a positive value replaces
+///       `candidates.scales.corner_radius` for this call}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation.
 /// \throws std::invalid_argument if a coordinate is not finite, a candidate index is out of the

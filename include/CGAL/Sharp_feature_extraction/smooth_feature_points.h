@@ -24,10 +24,22 @@ namespace CGAL {
 /// orientation.
 ///
 /// \param features the output of `rmls_project_candidates()`, smoothed in place.
-/// \param np optional named parameters:
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage does not compile.
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{number_of_iterations} number of smoothing passes; default: 3. \cgalParamNEnd
-///   \cgalParamNBegin{callback} progress in [0,1]; returning `false` stops. \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{number of smoothing passes}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{3}
+///     \cgalParamExtra{0 leaves the points as they are}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{a function that receives the progress and can stop the computation}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///     \cgalParamExtra{called, on the calling thread, with the fraction of the work done (from 0
+///       to 1); when it returns `false` the computation stops and the function returns `false`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation (the points are then unchanged).
 template <typename ConcurrencyTag, typename GeomTraits,
