@@ -19,6 +19,8 @@ namespace IO {
 /// Reads polylines written in Mesh_3's text format (one polyline per line, `n x1 y1 z1 ... xn yn zn`;
 /// blank lines and lines starting with `#` are skipped).
 /// \tparam Point_3 a point type constructible from three doubles.
+/// \param is the input stream.
+/// \param polylines receives the polylines, appended in the order of the lines.
 /// \returns `false` (and leaves `polylines` with what was read before) on a malformed line:
 ///   a count that does not match the coordinates, or a non-finite coordinate.
 template <typename Point_3>

@@ -25,6 +25,10 @@ namespace IO {
 /// `n2x n2y n2z` (second surface normal), `corner` (1 at corners) and `curve` (index of a curve
 /// through it), and one `edge` element (`vertex1 vertex2`) per polyline segment.
 /// Shared corner points and the closing point of loops are written once.
+/// \tparam GeomTraits the traits of the network (see `SharpFeatureExtractionTraits`).
+/// \param os the output stream.
+/// \param network the curves and corners, for instance `Sharp_features::network`.
+/// \returns `true` on success, `false` if the stream failed.
 template <typename GeomTraits>
 bool write_PLY_feature_curves(std::ostream& os, const Feature_curve_network<GeomTraits>& network)
 {
@@ -87,7 +91,7 @@ bool write_PLY_feature_curves(std::ostream& os, const Feature_curve_network<Geom
 }
 
 /// \ingroup PkgSharpFeatureExtractionIORef
-/// Same, to the file `filename`.
+/// Same, to the file `filename` (`false` also if it cannot be opened).
 template <typename GeomTraits>
 bool write_PLY_feature_curves(const std::string& filename, const Feature_curve_network<GeomTraits>& network)
 {

@@ -20,7 +20,10 @@ namespace IO {
 /// with enough digits that reading them back gives the same doubles (so shared corners and
 /// closed loops stay exact).
 /// \tparam PolylineRange a range of ranges of points (e.g. `std::vector<std::vector<Point_3>>`).
-/// \returns `true` on success.
+///   The points need `x()`, `y()` and `z()` to which `CGAL::to_double()` applies.
+/// \param os the output stream.
+/// \param polylines the polylines, written in their order.
+/// \returns `true` on success, `false` if the stream failed.
 template <typename PolylineRange>
 bool write_polylines(std::ostream& os, const PolylineRange& polylines)
 {
@@ -36,7 +39,7 @@ bool write_polylines(std::ostream& os, const PolylineRange& polylines)
 }
 
 /// \ingroup PkgSharpFeatureExtractionIORef
-/// Same, to the file `filename`.
+/// Same, to the file `filename` (`false` also if it cannot be opened).
 template <typename PolylineRange>
 bool write_polylines(const std::string& filename, const PolylineRange& polylines)
 {
