@@ -397,7 +397,7 @@ inline bool project_on_edge(const Rmls_surface& a, const Rmls_surface& b, const 
 }
 
 /// Same with three surfaces: the common point of the three tangent planes.
-inline bool project_on_corner(const Rmls_surface* s[3], const Vec3& start, double step_tolerance,
+inline bool project_on_corner(const Rmls_surface* const s[3], const Vec3& start, double step_tolerance,
                               Vec3& c, std::array<Vec3, 3>& normals)
 {
   c = start;
@@ -481,6 +481,83 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
   return kept;
 }
 
+/// The centroid of the members of the surfaces `set[0..count)` other than `self`, weighted by
+/// their member counts: the side that the normal of `self` points away from.
+inline Vec3 centroid_of_others(const Rmls_surface* self, const Rmls_surface* const* set, int count)
+{
+  Vec3 sum = Vec3::Zero();
+  double weight = 0;
+  for(int i = 0; i < count; ++i)
+    if(set[i] != self)
+    {
+      sum += double(set[i]->members.size()) * set[i]->centroid;
+      weight += double(set[i]->members.size());
+    }
+  return Vec3(sum / weight);
+}
+
+/// What a projected point must satisfy to be kept: close to its candidate, between surfaces
+/// that are distinct, and supported by the members of each surface.
+struct Surface_checks
+{
+  typedef Forward_search_constants Constants;
+
+  Surface_checks(const Forward_search& search, const Scales& scales, const Projection_parameters& parameters)
+    : search(search), radius(search.radius()), cos_sharp(std::cos(radians(parameters.sharpness_angle))),
+      step_tolerance(Constants::newton_step_tolerance * scales.spacing),
+      coincident(corner_weight_floor * scales.spacing)
+  {}
+
+  bool near_candidate(const Vec3& x, const Vec3& p) const { return (x - p).norm() <= Constants::max_offset * radius; }
+  bool distinct(const Vec3& na, const Vec3& nb) const { return std::abs(na.dot(nb)) <= cos_sharp; }
+  bool supported(const Rmls_surface& s, const Vec3& x) const
+  {
+    return distance_to_members(search, s, x) <= Constants::max_support_gap * radius;
+  }
+
+  const Forward_search& search;
+  double radius, cos_sharp, step_tolerance;
+  /// Corner-to-edge distances below this count as 0 in the corner weight 1/|c - e|.
+  double coincident;
+  /// `coincident` relative to the spacing.
+  static constexpr double corner_weight_floor = 1e-12;
+};
+
+/// The edge point of candidate `p` on the surfaces `pair`, if it passes the checks.
+inline bool project_edge_point(const Rmls_surface* const pair[2], const Vec3& p, std::size_t source,
+                               const Surface_checks& checks, Working_edge_point& edge)
+{
+  Vec3 e;
+  std::array<Vec3, 2> en;
+  if(!project_on_edge(*pair[0], *pair[1], p, checks.step_tolerance, e, en) || !checks.near_candidate(e, p)
+     || !checks.distinct(en[0], en[1]) || !checks.supported(*pair[0], e) || !checks.supported(*pair[1], e))
+    return false;
+  edge.point = e;
+  edge.source = source;
+  for(int i = 0; i < 2; ++i)
+    edge.normals[i] = orient_away(en[i], e, centroid_of_others(pair[i], pair, 2));
+  return true;
+}
+
+/// The corner point of candidate `p` on the surfaces `triple`, whose first two gave the edge
+/// point `e`, if it passes the checks.
+inline bool project_corner_point(const Rmls_surface* const triple[3], const Vec3& p, std::size_t source,
+                                 const Vec3& e, const Surface_checks& checks, Working_corner_point& corner)
+{
+  Vec3 c;
+  std::array<Vec3, 3> cn;
+  if(!project_on_corner(triple, p, checks.step_tolerance, c, cn) || !checks.near_candidate(c, p)
+     || !checks.distinct(cn[0], cn[2]) || !checks.distinct(cn[1], cn[2])
+     || !checks.supported(*triple[0], c) || !checks.supported(*triple[1], c) || !checks.supported(*triple[2], c))
+    return false;
+  corner.point = c;
+  corner.source = source;
+  corner.weight = 1. / (std::max)((c - e).norm(), checks.coincident);
+  for(int i = 0; i < 3; ++i)
+    corner.normals[i] = orient_away(cn[i], c, centroid_of_others(triple[i], triple, 3));
+  return true;
+}
+
 /// The projection of `p` onto the intersections of `surfaces` (at least two, found by
 /// `find_surfaces()` around a candidate at most a few spacings from `p`, whose neighbourhood
 /// is in `search.local`): an edge point on the two surfaces closest to `p`, and a corner point
@@ -489,62 +566,18 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
                                       const Vec3& p, std::size_t source, const Scales& scales,
                                       const Projection_parameters& parameters)
 {
-  typedef Forward_search_constants Constants;
-  Projection result;
-  const double radius = search.radius();
-  const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
-  const double step_tolerance = Constants::newton_step_tolerance * scales.spacing;
+  const Surface_checks checks(search, scales, parameters);
   // The surfaces closest to the point define its edge (and corner).
   std::stable_sort(distinct.begin(), distinct.end(), [&](const Rmls_surface* a, const Rmls_surface* b) {
     return a->height_field.residual(p) < b->height_field.residual(p);
   });
-
-  auto supported = [&](const Rmls_surface& s, const Vec3& q) {
-    return distance_to_members(search, s, q) <= Constants::max_support_gap * radius;
-  };
-  auto others_centroid = [&](const Rmls_surface* self, const Rmls_surface* const* set, int count) {
-    Vec3 sum = Vec3::Zero();
-    double weight = 0;
-    for(int i = 0; i < count; ++i)
-      if(set[i] != self)
-      {
-        sum += double(set[i]->members.size()) * set[i]->centroid;
-        weight += double(set[i]->members.size());
-      }
-    return Vec3(sum / weight);
-  };
-
-  Vec3 e;
-  std::array<Vec3, 2> en;
+  Projection result;
   const Rmls_surface* pair[2] = {distinct[0], distinct[1]};
-  if(project_on_edge(*pair[0], *pair[1], p, step_tolerance, e, en)
-     && (e - p).norm() <= Constants::max_offset * radius
-     && std::abs(en[0].dot(en[1])) <= cos_sharp
-     && supported(*pair[0], e) && supported(*pair[1], e))
+  result.has_edge = project_edge_point(pair, p, source, checks, result.edge);
+  if(result.has_edge && distinct.size() >= 3)
   {
-    result.has_edge = true;
-    result.edge.point = e;
-    result.edge.source = source;
-    for(int i = 0; i < 2; ++i)
-      result.edge.normals[i] = orient_away(en[i], e, others_centroid(pair[i], pair, 2));
-  }
-  if(!result.has_edge || distinct.size() < 3)
-    return result;
-
-  const Rmls_surface* triple[3] = {distinct[0], distinct[1], distinct[2]};
-  Vec3 c;
-  std::array<Vec3, 3> cn;
-  if(project_on_corner(triple, p, step_tolerance, c, cn)
-     && (c - p).norm() <= Constants::max_offset * radius
-     && std::abs(cn[0].dot(cn[2])) <= cos_sharp && std::abs(cn[1].dot(cn[2])) <= cos_sharp
-     && supported(*triple[0], c) && supported(*triple[1], c) && supported(*triple[2], c))
-  {
-    result.has_corner = true;
-    result.corner.point = c;
-    result.corner.source = source;
-    result.corner.weight = 1. / (std::max)((c - e).norm(), 1e-12 * scales.spacing);
-    for(int i = 0; i < 3; ++i)
-      result.corner.normals[i] = orient_away(cn[i], c, others_centroid(triple[i], triple, 3));
+    const Rmls_surface* triple[3] = {distinct[0], distinct[1], distinct[2]};
+    result.has_corner = project_corner_point(triple, p, source, result.edge.point, checks, result.corner);
   }
   return result;
 }
@@ -685,6 +718,76 @@ inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const s
   return cells;
 }
 
+/// The projections of the candidates of the cells of one block, in the order of
+/// `cells.members`; one per thread (it owns the forward search's workspace).
+class Cell_projector
+{
+public:
+  Cell_projector(const Indexed_input& input, const Candidate_cells& cells, const Scales& scales,
+                 const Projection_parameters& parameters, std::vector<Projection>& projections)
+    : m_input(input), m_cells(cells), m_scales(scales), m_parameters(parameters), m_projections(projections)
+  {}
+
+  /// Searches the surfaces around the first candidate of `cell` (the next ones if it finds
+  /// fewer than two, up to `surface_searches_per_cell`); they serve the rest of the cell,
+  /// except the candidates whose surroundings they do not explain (near a corner, say): those
+  /// search their own.
+  void project_cell(std::size_t cell)
+  {
+    const std::size_t size = m_cells.size(cell);
+    for(std::size_t rank = 0; rank < (std::min)(size, surface_searches_per_cell); ++rank)
+    {
+      const std::vector<const Rmls_surface*> surfaces = surfaces_around(m_cells.member(cell, rank));
+      if(surfaces.empty())
+        continue;
+      m_own_search.clear();
+      for(std::size_t other = rank; other < size; ++other)
+      {
+        if(other == rank || surfaces_explain(m_search, surfaces, point(cell, other), m_scales.rmls_tolerance))
+          project(cell, other, surfaces);
+        else
+          m_own_search.push_back(other);
+      }
+      for(std::size_t other : m_own_search)
+      {
+        const std::vector<const Rmls_surface*> own = surfaces_around(m_cells.member(cell, other));
+        if(!own.empty())
+          project(cell, other, own);
+      }
+      return;
+    }
+  }
+
+private:
+  const Indexed_input& m_input;
+  const Candidate_cells& m_cells;
+  const Scales& m_scales;
+  const Projection_parameters& m_parameters;
+  std::vector<Projection>& m_projections;
+  Forward_search m_search;
+  std::vector<std::size_t> m_neighbors, m_own_search;
+
+  const Vec3& point(std::size_t cell, std::size_t rank) const { return m_input.points[m_cells.member(cell, rank)]; }
+
+  // The surfaces around the candidate at `position` (in `m_search`).
+  std::vector<const Rmls_surface*> surfaces_around(std::size_t position)
+  {
+    const Vec3& p = m_input.points[position];
+    m_input.index.nearest(p, m_scales.rmls_neighbors, m_neighbors);
+    m_search.local.clear();
+    for(std::size_t j : m_neighbors)
+      m_search.local.push_back(m_input.points[j]);
+    return find_surfaces(m_search, p, m_scales, m_parameters);
+  }
+
+  void project(std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces)
+  {
+    const std::size_t q = m_cells.member(cell, rank);
+    m_projections[m_cells.start[cell] + rank] =
+      project_on_surfaces(m_search, surfaces, m_input.points[q], m_input.input_index[q], m_scales, m_parameters);
+  }
+};
+
 /// Stage 2 on the candidates (positions in `input.points`, with the stage-1 `residuals` of
 /// every point in spatial order). Returns false if cancelled.
 template <typename ConcurrencyTag>
@@ -701,66 +804,25 @@ bool rmls_project(const Indexed_input& input, const std::vector<std::size_t>& ca
   // independent estimate, and the smoothing of stage 3 averages the noise out of them.
   const Candidate_cells cells =
     group_candidates(points, candidates, residuals, noise_dominates(scales) ? 0. : candidate_cell_per_spacing * scales.spacing);
-  // Projections of the cells' members, in the order of `cells.members`.
   std::vector<Projection> projections(cells.members.size());
   if(!parallel_blocks<ConcurrencyTag>(cells.size(), progress, [&](std::size_t first, std::size_t last) {
-       Forward_search search;
-       std::vector<std::size_t> neighbors, own_search;
-       // The surfaces around the candidate at `position` (in `search`).
-       auto surfaces_around = [&](std::size_t position) {
-         input.index.nearest(points[position], scales.rmls_neighbors, neighbors);
-         search.local.clear();
-         for(std::size_t j : neighbors)
-           search.local.push_back(points[j]);
-         return find_surfaces(search, points[position], scales, parameters);
-       };
-       auto project = [&](std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces) {
-         const std::size_t q = cells.member(cell, rank);
-         projections[cells.start[cell] + rank] =
-           project_on_surfaces(search, surfaces, points[q], input.input_index[q], scales, parameters);
-       };
+       Cell_projector projector(input, cells, scales, parameters, projections);
        for(std::size_t cell = first; cell < last; ++cell)
-       {
-         const std::size_t size = cells.size(cell);
-         for(std::size_t rank = 0; rank < (std::min)(size, surface_searches_per_cell); ++rank)
-         {
-           const std::vector<const Rmls_surface*> surfaces = surfaces_around(cells.member(cell, rank));
-           if(surfaces.empty())
-             continue;
-           // The surfaces found here serve the rest of the cell, except the candidates whose
-           // surroundings they do not explain (near a corner, say): those search their own.
-           own_search.clear();
-           for(std::size_t other = rank; other < size; ++other)
-           {
-             if(other == rank || surfaces_explain(search, surfaces, points[cells.member(cell, other)], scales.rmls_tolerance))
-               project(cell, other, surfaces);
-             else
-               own_search.push_back(other);
-           }
-           for(std::size_t other : own_search)
-           {
-             const std::vector<const Rmls_surface*> own = surfaces_around(cells.member(cell, other));
-             if(!own.empty())
-               project(cell, other, own);
-           }
-           break;
-         }
-       }
+         projector.project_cell(cell);
      }))
     return false;
   // Edge and corner points in the order of their candidates.
   std::vector<std::size_t> order(projections.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells.members[a] < cells.members[b]; });
-
   std::vector<Working_corner_point> corners;
   for(std::size_t i : order)
   {
-    const Projection& pr = projections[i];
-    if(pr.has_edge)
-      out.edge_points.push_back(pr.edge);
-    if(pr.has_corner)
-      corners.push_back(pr.corner);
+    const Projection& projection = projections[i];
+    if(projection.has_edge)
+      out.edge_points.push_back(projection.edge);
+    if(projection.has_corner)
+      corners.push_back(projection.corner);
   }
   out.corner_points = group_corner_points(std::move(corners), scales.corner_radius);
   return true;

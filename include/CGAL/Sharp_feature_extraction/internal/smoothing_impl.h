@@ -66,18 +66,53 @@ inline double principal_line(const std::vector<Working_edge_point>& edges, const
   return fit_principal_line(count, [&](std::size_t j) -> const Vec3& { return edges[set[j]].point; }, centroid, direction);
 }
 
+/// Edge point `i` moved onto the principal line of `neighbors` (its same-crease neighbours,
+/// nearest first): of the smallest prefix of them that is clearly along a line (see
+/// `Smoothing_constants::linearity`). With `average_normals`, its normals become the average
+/// of theirs, in its own order and orientation.
+inline Working_edge_point smoothed_edge_point(const std::vector<Working_edge_point>& edges, std::size_t i,
+                                              const std::vector<std::size_t>& neighbors, bool average_normals)
+{
+  typedef Smoothing_constants Constants;
+  Working_edge_point out = edges[i];
+  const std::size_t largest = (std::min)(Constants::max_neighbors, neighbors.size());
+  std::size_t count = (std::min)(Constants::initial_neighbors, neighbors.size());
+  Vec3 centroid, direction;
+  double linearity = principal_line(edges, neighbors, count, centroid, direction);
+  while(linearity < Constants::linearity && count < largest)
+  {
+    count = (std::min)(count + Constants::neighbor_increment, largest);
+    linearity = principal_line(edges, neighbors, count, centroid, direction);
+  }
+  const Vec3& p = edges[i].point;
+  out.point = centroid + (p - centroid).dot(direction) * direction;
+  if(!average_normals)
+    return out;
+  const double cos_same = std::cos(radians(same_crease_normal_angle));
+  std::array<Vec3, 2> sum = {{Vec3::Zero(), Vec3::Zero()}};
+  for(std::size_t j = 0; j < count; ++j)
+  {
+    if(match_normal_pairs(edges[i].normals, edges[neighbors[j]].normals, cos_same) == 0)
+      continue;
+    const std::array<Vec3, 2> aligned = align_normal_pair(edges[i].normals, edges[neighbors[j]].normals);
+    sum[0] += aligned[0];
+    sum[1] += aligned[1];
+  }
+  if(sum[0].norm() > 0 && sum[1].norm() > 0)
+    out.normals = {{sum[0].normalized(), sum[1].normalized()}};
+  return out;
+}
+
 /// Stage 3. Returns false if cancelled.
 template <typename ConcurrencyTag>
 bool smooth_edge_points(Working_feature_points& features, const Smoothing_parameters& parameters, Progress progress)
 {
-  typedef Smoothing_constants Constants;
   std::vector<Working_edge_point>& edges = features.edge_points;
   std::vector<Vec3> corners;
   for(const Working_corner_point& c : features.corner_points)
     corners.push_back(c.point);
   Point_index corner_index;
   corner_index.build<CGAL::Sequential_tag>(corners);
-  const double cos_same = std::cos(radians(same_crease_normal_angle));
 
   for(unsigned int pass = 0; pass < parameters.passes; ++pass)
   {
@@ -88,40 +123,14 @@ bool smooth_edge_points(Working_feature_points& features, const Smoothing_parame
     index.build<ConcurrencyTag>(positions);
     std::vector<Working_edge_point> next = edges;
     const bool last_pass = pass + 1 == parameters.passes;
-    Progress pass_progress = progress.sub(double(pass) / parameters.passes,
-                                          double(pass + 1) / parameters.passes);
+    Progress pass_progress = progress.sub(double(pass) / parameters.passes, double(pass + 1) / parameters.passes);
     if(!parallel_blocks<ConcurrencyTag>(edges.size(), pass_progress, [&](std::size_t first, std::size_t last) {
          std::vector<std::size_t> scratch, neighbors;
          for(std::size_t i = first; i < last; ++i)
          {
            same_crease_neighbors(edges, index, corner_index, corners, i, scratch, neighbors);
-           if(neighbors.size() < 3)
-             continue;
-           // Adaptive growth: the smallest neighbourhood that is clearly along a line.
-           std::size_t count = (std::min)(Constants::initial_neighbors, neighbors.size());
-           Vec3 centroid, direction;
-           double linearity = principal_line(edges, neighbors, count, centroid, direction);
-           while(linearity < Constants::linearity && count < (std::min)(Constants::max_neighbors, neighbors.size()))
-           {
-             count = (std::min)(count + Constants::neighbor_increment, (std::min)(Constants::max_neighbors, neighbors.size()));
-             linearity = principal_line(edges, neighbors, count, centroid, direction);
-           }
-           const Vec3& p = edges[i].point;
-           next[i].point = centroid + (p - centroid).dot(direction) * direction;
-           if(last_pass)
-           {
-             std::array<Vec3, 2> sum = {{Vec3::Zero(), Vec3::Zero()}};
-             for(std::size_t j = 0; j < count; ++j)
-             {
-               if(match_normal_pairs(edges[i].normals, edges[neighbors[j]].normals, cos_same) == 0)
-                 continue;
-               const std::array<Vec3, 2> aligned = align_normal_pair(edges[i].normals, edges[neighbors[j]].normals);
-               sum[0] += aligned[0];
-               sum[1] += aligned[1];
-             }
-             if(sum[0].norm() > 0 && sum[1].norm() > 0)
-               next[i].normals = {{sum[0].normalized(), sum[1].normalized()}};
-           }
+           if(neighbors.size() >= 3)
+             next[i] = smoothed_edge_point(edges, i, neighbors, last_pass);
          }
        }))
       return false;
