@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
 // Surface meshing of an implicit function with Mesh_3, the feature curves protected.
 //
 // The domain is a Labeled_mesh_domain_3 over the implicit function (negative inside), wrapped
@@ -6,12 +9,11 @@
 // the Delaunay refinement of the surface then cannot cut across a crease. Without curves the
 // very same domain, criteria and options run, so the two results compare one thing only.
 //
-// This header is the only one of the example that includes Mesh_3 (a heavy compilation).
+// This header is the only one of the package that includes Mesh_3 (a heavy compilation).
 
-#ifndef SFE_MESHING_FEATURE_PROTECTED_MESHING_H
-#define SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H
 
-#include "meshing/surface_mesh_checks.h"
 
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -23,14 +25,13 @@
 #include <CGAL/make_mesh_3.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
-#include <cstdlib>
 #include <functional>
-#include <iostream>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -39,10 +40,12 @@
 #include <thread>
 #include <vector>
 
-namespace sfe_meshing {
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+namespace reconstruction {
 
-/// Mesh_3 criteria, as absolute lengths (`Point_cloud_meshing_options` derives them from the
-/// sampling spacing).
+/// Mesh_3 criteria, as absolute lengths (derived from the sampling spacing unless given).
 struct Mesh_sizes
 {
   double edge_size = 0;      ///< largest protecting ball / mesh edge along a feature curve
@@ -54,7 +57,7 @@ struct Mesh_sizes
 struct Surface_meshing_limits
 {
   double time_limit = 0;                  ///< seconds; 0: none
-  /// 0: none (`mesh_point_cloud()` sets one from the number of input points)
+  /// 0: none (the reconstruction sets one from the number of input points)
   std::size_t maximal_number_of_vertices = 0;
   double relative_error_bound = 1e-6;     ///< of the surface intersections, relative to the bounding sphere
   unsigned seed = 0;                      ///< of Mesh_3's random initial points
@@ -64,6 +67,13 @@ struct Surface_meshing_limits
   /// order, is lifted too.
   double far_field_margin = 10;
   int far_field_samples = 32;
+  /// Called about 5 times per second while Mesh_3 runs, with the seconds elapsed; returning
+  /// false stops Mesh_3 (read only while it refines).
+  std::function<bool(double)> heartbeat;
+  /// Called once, with the seconds elapsed, when Mesh_3 is still at work at
+  /// `unresponsive_time_limit_factor` times the time limit (stuck where it does not read its
+  /// stop flag). Empty: keep waiting.
+  std::function<void(double)> unresponsive_handler;
 };
 
 /// the largest of 0 and -f on a `samples` x `samples` grid on each face of the cube of half
@@ -87,13 +97,13 @@ double far_field_level(const Function& f, const Point_3& center, double radius, 
   return level;
 }
 
-/// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
-/// else its first line and the failed expression): the message spans a dozen lines of file,
-/// line and debugging data.
 /// Beyond this multiple of the time limit, Mesh_3 is taken as stuck where it does not read its
 /// stop flag (see mesh_implicit_surface()): twice the limit leaves it the whole limit to answer.
 constexpr double unresponsive_time_limit_factor = 2;
 
+/// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
+/// else its first line and the failed expression): the message spans a dozen lines of file,
+/// line and debugging data.
 inline std::string first_line_of_failure(const std::string& message)
 {
   auto line_after = [&](const std::string& key) -> std::string {
@@ -115,6 +125,8 @@ inline std::string first_line_of_failure(const std::string& message)
   return expression.empty() ? first : first + " (" + expression + ")";
 }
 
+typedef std::array<std::size_t, 3> Triangle_indices;
+
 /// A closed surface as a triangle soup, facets oriented outward.
 template <typename Point_3>
 struct Triangle_soup_3
@@ -135,8 +147,7 @@ struct Surface_meshing_result
 
 /// meshes the boundary of { x in `bound` : `function`(x) < 0 } with Mesh_3, protecting the
 /// polylines `features` (each a `std::vector<Point_3>`; closed ones repeat their first point,
-/// curves meet only at shared end points: see `repair_feature_curves_for_mesh_3()`).
-/// `heartbeat(seconds)` is called about 5 times per second while Mesh_3 runs.
+/// curves meet only at shared end points: see `find_mesh_3_polyline_problems()`).
 ///
 /// The function must be positive on the faces of the cube around `bound`, which bounds the
 /// domain. An implicit function fitted to samples (Poisson's) is zero far from them up to the
@@ -150,8 +161,7 @@ template <typename GeomTraits, typename Function>
 Surface_meshing_result<typename GeomTraits::Point_3>
 mesh_implicit_surface(const Function& function, const typename GeomTraits::Sphere_3& bound,
                       const std::vector<std::vector<typename GeomTraits::Point_3>>& features,
-                      const Mesh_sizes& sizes, const Surface_meshing_limits& limits,
-                      const std::function<void(double)>& heartbeat = {})
+                      const Mesh_sizes& sizes, const Surface_meshing_limits& limits)
 {
   typedef typename GeomTraits::Point_3 Point_3;
   typedef CGAL::Labeled_mesh_domain_3<GeomTraits> Implicit_domain;
@@ -179,27 +189,29 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
                     params::facet_size = sizes.facet_size,
                     params::facet_distance = sizes.facet_distance);
 
-  // a watchdog thread reports progress and enforces the time limit through Mesh_3's stop flag
+  // a watchdog thread reports progress and stops Mesh_3 through its stop flag, at the time
+  // limit or when asked to
   std::atomic<bool> stop(false);
   std::mutex mutex;
   std::condition_variable done_signal;
-  bool done = false;
+  bool done = false, unresponsive_reported = false;
   const auto start = std::chrono::steady_clock::now();
   std::thread watchdog([&] {
     std::unique_lock<std::mutex> lock(mutex);
     while(!done_signal.wait_for(lock, std::chrono::milliseconds(200), [&] { return done; })) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if(heartbeat)
-        heartbeat(seconds);
+      if(limits.heartbeat && !limits.heartbeat(seconds))
+        stop = true;
       if(limits.time_limit > 0 && seconds > limits.time_limit)
         stop = true;
       // Mesh_3 5.5 reads the stop flag only while it refines. Stuck in the protection of the
       // feature curves (pinion, 25k points, 0.5% noise, seed 5: in Polyline::locate for over
-      // 8 min) it never returns, and nothing can end it from outside but the process itself.
-      if(limits.time_limit > 0 && seconds > unresponsive_time_limit_factor * limits.time_limit) {
-        std::cerr << "Mesh_3 failed: still protecting the feature curves " << seconds
-                  << " s after the start, past its time limit of " << limits.time_limit << " s" << std::endl;
-        std::_Exit(EXIT_FAILURE);
+      // 8 min) it never returns, and nothing can end it from outside but the process itself:
+      // the caller decides.
+      if(limits.time_limit > 0 && seconds > unresponsive_time_limit_factor * limits.time_limit &&
+         limits.unresponsive_handler && !unresponsive_reported) {
+        unresponsive_reported = true;
+        limits.unresponsive_handler(seconds);
       }
     }
   });
@@ -279,6 +291,9 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
   return result;
 }
 
-} // namespace sfe_meshing
+} // namespace reconstruction
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
 
-#endif // SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H
