@@ -193,7 +193,7 @@ std::vector<Mesh_3_polyline_problem> find_contract_violations(const std::vector<
 ///
 /// The proximity tests see the whole segments, not only the vertices.
 ///
-/// \tparam Point_3 a point type of a \cgal kernel
+/// \tparam Point_3 a point type of a CGAL kernel
 /// \param polylines the polylines, each a sequence of points
 /// \param np an optional sequence of named parameters among the ones listed below
 ///

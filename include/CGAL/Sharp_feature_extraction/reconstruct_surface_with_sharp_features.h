@@ -122,7 +122,7 @@ Reconstruction_settings reconstruction_settings(const NamedParameters& np)
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`
 ///         (the normal estimation)
 /// \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-/// \tparam GeomTraits a \cgal kernel
+/// \tparam GeomTraits a CGAL kernel
 ///
 /// \param points the sampled points (no normals needed)
 /// \param features the feature curves and the scales of the points, from `extract_sharp_features()`;
@@ -158,7 +158,7 @@ Reconstruction_settings reconstruction_settings(const NamedParameters& np)
 ///   \cgalParamNBegin{unresponsive_mesher_handler}
 ///     \cgalParamDescription{called once, from another thread, with the seconds elapsed, when
 ///                           Mesh_3 is still running at twice `maximum_running_time`. Mesh_3
-///                           (\cgal 5.5) reads its stop flag only while it refines; stuck in the
+///                           (CGAL 5.5) reads its stop flag only while it refines; stuck in the
 ///                           protection of the polylines, it may never return, and only the
 ///                           process can end it: a program may print why and exit from here}
 ///     \cgalParamType{`std::function<void(double)>`}

@@ -32,7 +32,7 @@ namespace CGAL {
 /// are dropped (closed loops: three times that length); last, of two polylines still closer
 /// than the tolerance without sharing a point there, the shorter is dropped.
 ///
-/// \tparam Point_3 a point type of a \cgal kernel
+/// \tparam Point_3 a point type of a CGAL kernel
 /// \param polylines the polylines, each a sequence of points; changed in place
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
