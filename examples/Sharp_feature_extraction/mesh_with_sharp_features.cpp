@@ -1,12 +1,9 @@
 // Surface reconstruction with sharp features (the paper's reconstruction application): point
-// cloud in (no normals needed), closed triangle mesh out, its creases on the extracted curves.
+// cloud in, closed triangle mesh out, its creases on the extracted curves. extract_sharp_features()
+// gives the curves and the scales of the cloud, reconstruct_surface_with_sharp_features() the rest;
+// --no-features runs the same reconstruction without any curve, for comparison.
 //
 //   mesh_with_sharp_features cloud.xyz out          # writes out.off and out.ply
-//   mesh_with_sharp_features --no-features cloud.xyz out_plain
-//
-// extract_sharp_features() gives the curves and the scales of the cloud;
-// reconstruct_surface_with_sharp_features() does the rest. --no-features runs the same
-// reconstruction without any curve, for comparison.
 
 #include "utilities/feature_curve_files.h"
 #include "utilities/progress_bar.h"
@@ -158,6 +155,48 @@ CGAL::Feature_curve_network<K> extract(const std::vector<Point_3>& points, const
   return network;
 }
 
+/// Mesh_3 stuck where it does not read its stop flag (see unresponsive_mesher_handler): only the
+/// process can end it.
+[[noreturn]] void stop_when_stuck(double seconds, double time_limit)
+{
+  std::cerr << "\nmesh_with_sharp_features: Mesh_3 failed: still protecting the feature curves " << seconds
+            << " s after the start, past its time limit of " << time_limit << " s" << std::endl;
+  std::_Exit(EXIT_FAILURE);
+}
+
+/// the reconstruction with the options of the command line; fails in one line if it makes no surface.
+CGAL::Surface_reconstruction_report<K> reconstruct(const std::vector<Point_3>& points,
+                                                   const CGAL::Feature_curve_network<K>& network, const Arguments& a,
+                                                   const sfe_utilities::Terminal_progress_bar& bar,
+                                                   std::vector<Point_3>& mesh_points,
+                                                   std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  // a size given as a multiple of the spacing (negative) becomes a length
+  auto length = [&](double size) { return size < 0 ? -size * network.scales.spacing : size; };
+  const auto mesh_3 = CGAL::parameters::maximum_running_time(a.time_limit)
+                        .callback(std::function<bool(double)>([&](double f) { return a.quiet || bar(f); }));
+  const auto sizes = sfe::parameters::facet_size(
+    length(a.facet_size),
+    sfe::parameters::facet_distance(
+      length(a.facet_distance),
+      sfe::parameters::edge_size(length(a.edge_size), sfe::parameters::facet_angle(a.facet_angle, mesh_3))));
+  const auto uses = sfe::parameters::protect_polylines(
+    a.protect, sfe::parameters::correct_normals(a.correct_normals, sfe::parameters::sharpen_creases(a.sharpen, sizes)));
+  const std::function<void(double)> when_stuck = [&a](double seconds) { stop_when_stuck(seconds, a.time_limit); };
+  CGAL::Surface_reconstruction_report<K> report;
+  try {
+    report = CGAL::reconstruct_surface_with_sharp_features<CGAL::Parallel_if_available_tag>(
+      points, network, mesh_points, triangles, sfe::parameters::unresponsive_mesher_handler(when_stuck, uses));
+  } catch(const CGAL::Surface_reconstruction_error& e) {
+    bar.finish();
+    fail(e.what());
+  }
+  bar.finish();
+  if(triangles.empty())
+    fail(report.stop_reason.empty() ? "no surface" : report.stop_reason);
+  return report;
+}
+
 /// writes the soup as a halfedge mesh, facing outward, in OFF and PLY.
 void write_mesh(const std::string& output, std::vector<Point_3> points,
                 const std::vector<std::array<std::size_t, 3>>& triangles, bool closed_manifold)
@@ -236,39 +275,9 @@ int main(int argc, char* argv[])
   const CGAL::Feature_curve_network<K> network = extract(points, a, bar);
   const double seconds_extraction = seconds_since(start);
   bar.set_stage("reconstructing");
-  // a size given as a multiple of the spacing (negative) becomes a length
-  auto length = [&](double size) { return size < 0 ? -size * network.scales.spacing : size; };
   std::vector<Point_3> mesh_points;
   std::vector<std::array<std::size_t, 3>> triangles;
-  CGAL::Surface_reconstruction_report<K> report;
-  // Mesh_3 stuck where it does not read its stop flag (see unresponsive_mesher_handler): only
-  // the process can end it
-  auto stop_when_stuck = [&](double seconds) {
-    std::cerr << "\nmesh_with_sharp_features: Mesh_3 failed: still protecting the feature curves " << seconds
-              << " s after the start, past its time limit of " << a.time_limit << " s" << std::endl;
-    std::_Exit(EXIT_FAILURE);
-  };
-  try {
-    const auto mesh_3 = CGAL::parameters::maximum_running_time(a.time_limit)
-                          .callback(std::function<bool(double)>([&](double f) { return a.quiet || bar(f); }));
-    const auto sizes = sfe::parameters::facet_size(
-      length(a.facet_size),
-      sfe::parameters::facet_distance(
-        length(a.facet_distance),
-        sfe::parameters::edge_size(length(a.edge_size), sfe::parameters::facet_angle(a.facet_angle, mesh_3))));
-    const auto uses = sfe::parameters::protect_polylines(
-      a.protect, sfe::parameters::correct_normals(a.correct_normals, sfe::parameters::sharpen_creases(a.sharpen, sizes)));
-    report = CGAL::reconstruct_surface_with_sharp_features<CGAL::Parallel_if_available_tag>(
-      points, network, mesh_points, triangles,
-      sfe::parameters::unresponsive_mesher_handler(std::function<void(double)>(stop_when_stuck), uses));
-  } catch(const CGAL::Surface_reconstruction_error& e) {
-    bar.finish();
-    fail(e.what());
-  }
-  bar.finish();
-  if(triangles.empty())
-    fail(report.stop_reason.empty() ? "no surface" : report.stop_reason);
-
+  const CGAL::Surface_reconstruction_report<K> report = reconstruct(points, network, a, bar, mesh_points, triangles);
   const sfe_meshing::Surface_check check = sfe_meshing::check_triangle_soup(mesh_points, triangles);
   write_mesh(a.output, mesh_points, triangles, check.closed() && check.manifold());
   try {

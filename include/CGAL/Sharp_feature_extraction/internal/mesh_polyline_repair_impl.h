@@ -456,6 +456,59 @@ void drop_polylines_in_contact(std::vector<Feature_polyline<GeomTraits>>& curves
   curves = std::move(kept);
 }
 
+/// removes the non-finite and repeated points, and the normals that do not match the points;
+/// inserts points so that no segment is longer than the densify fraction of the tolerance;
+/// drops curves of fewer than two points. Corner indices are reset: they refer to the input.
+template <typename Curve>
+void prepare_points(std::vector<Curve>& curves, double tol, Mesh_3_polyline_repair_report& report)
+{
+  for(Curve& c : curves) {
+    if(!c.normals.empty() && c.normals.size() != c.points.size()) {
+      c.normals.clear();
+      ++report.discarded_normals;
+    }
+    c.front_corner = c.back_corner = Curve::no_corner;
+    report.removed_points += remove_bad_points(c, Mesh_polyline_contract::merge_fraction * tol);
+    const std::size_t before = c.points.size();
+    densify(c, Mesh_polyline_contract::densify_fraction * tol);
+    report.inserted_points += c.points.size() - before;
+  }
+  curves.erase(std::remove_if(curves.begin(), curves.end(), [](const Curve& c) { return c.points.size() < 2; }),
+               curves.end());
+}
+
+/// Snapping may create zero-length pieces or repeated points, splitting may create pieces too
+/// short to mesh: removes the points, drops the curves (loops: below three times the length).
+template <typename Curve>
+void drop_degenerate_and_short(std::vector<Curve>& curves, const Repair_settings& settings,
+                               Mesh_3_polyline_repair_report& report)
+{
+  for(Curve& c : curves)
+    report.removed_points += remove_bad_points(c, Mesh_polyline_contract::merge_fraction * settings.tolerance);
+  std::vector<Curve> kept;
+  for(Curve& c : curves) {
+    const bool closed = c.points.size() > 2 && c.points.front() == c.points.back();
+    const double min_length = closed ? 3 * settings.minimum_length : settings.minimum_length;
+    const bool degenerate = c.points.size() < 2 || (c.points.size() < 4 && closed) ||
+                            (c.points.front() == c.points.back() && !closed);
+    if(degenerate || curve_length(c) < min_length || curve_length(c) == 0) {
+      ++report.dropped_short;
+      continue;
+    }
+    kept.push_back(std::move(c));
+  }
+  curves = std::move(kept);
+}
+
+template <typename Curve>
+std::size_t count_closed_loops(const std::vector<Curve>& curves)
+{
+  std::size_t n = 0;
+  for(const Curve& c : curves)
+    n += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
+  return n;
+}
+
 /// Repairs `curves` in place so that Mesh_3 accepts them as protected features:
 /// removes non-finite and duplicate points; snaps ends within the tolerance to one shared point
 /// (preferring an exactly shared end, then a point of `junction_hints`, such as the corners of
@@ -464,89 +517,47 @@ void drop_polylines_in_contact(std::vector<Feature_polyline<GeomTraits>>& curves
 /// duplicate a longer one; last, drops the shorter of two curves that still come closer than
 /// the tolerance without sharing a point there (see `find_mesh_3_polyline_problems()`).
 /// Normals stay attached to their points (a curve whose normals do not match its points loses
-/// them). Corner indices are reset: they refer to the input network.
+/// them).
 template <typename GeomTraits>
-Mesh_3_polyline_repair_report repair_feature_polylines(
-  std::vector<Feature_polyline<GeomTraits>>& curves, const Repair_settings& options,
-  const std::vector<typename GeomTraits::Point_3>& junction_hints = {})
+Mesh_3_polyline_repair_report repair_feature_polylines(std::vector<Feature_polyline<GeomTraits>>& curves,
+                                                       const Repair_settings& settings,
+                                                       const std::vector<typename GeomTraits::Point_3>& junction_hints = {})
 {
   typedef Feature_polyline<GeomTraits> Curve;
   typedef typename GeomTraits::Point_3 Point_3;
-  
   Mesh_3_polyline_repair_report report;
   report.input_polylines = curves.size();
-  const double tol = options.tolerance;
-  const double merge_distance = Mesh_polyline_contract::merge_fraction * tol;
-
-  for(Curve& c : curves) {
-    if(!c.normals.empty() && c.normals.size() != c.points.size()) {
-      c.normals.clear();
-      ++report.discarded_normals;
-    }
-    c.front_corner = c.back_corner = Curve::no_corner;
-    report.removed_points += remove_bad_points(c, merge_distance);
-    const std::size_t before = c.points.size();
-    densify(c, Mesh_polyline_contract::densify_fraction * tol);
-    report.inserted_points += c.points.size() - before;
+  const double tol = settings.tolerance;
+  prepare_points(curves, tol, report);
+  if(!(tol > 0)) {
+    drop_degenerate_and_short(curves, settings, report);
+    report.output_polylines = curves.size();
+    return report;
   }
-  curves.erase(std::remove_if(curves.begin(), curves.end(),
-                              [](const Curve& c) { return c.points.size() < 2; }),
-               curves.end());
-
-  // snapping may create zero-length pieces or duplicated points, splitting may create pieces
-  // too short to mesh
-  auto clean_up = [&]() {
-    for(Curve& c : curves)
-      report.removed_points += remove_bad_points(c, merge_distance);
-    std::vector<Curve> kept;
-    for(Curve& c : curves) {
-      const bool closed = c.points.size() > 2 && c.points.front() == c.points.back();
-      const double min_length = closed ? 3 * options.minimum_length : options.minimum_length;
-      const bool degenerate = c.points.size() < 2 || (c.points.size() < 4 && closed) ||
-                              (c.points.front() == c.points.back() && !closed);
-      if(degenerate || curve_length(c) < min_length || curve_length(c) == 0) {
-        ++report.dropped_short;
-        continue;
-      }
-      kept.push_back(std::move(c));
+  const std::size_t closed_before = count_closed_loops(curves);
+  // each pass can leave new ends near others (a split moves a vertex, a dropped piece frees an
+  // end): repeat until nothing is left to fix
+  for(int pass = 0; pass < 4; ++pass) {
+    snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
+    if(pass == 0) {
+      drop_covered_curves<Curve, Point_3>(curves, tol, report);
+      drop_parallel_duplicates<Curve, Point_3>(curves, tol, report);
+      // sharp turns first: the two legs of an acute turn are close, but they are not a contact
+      split_sharp_turns(curves, tol, settings.maximum_angle, report);
     }
-    curves = std::move(kept);
-  };
-  auto count_closed = [&]() {
-    std::size_t n = 0;
-    for(const Curve& c : curves)
-      n += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
-    return n;
-  };
-
-  if(tol > 0) {
-    const std::size_t closed_before = count_closed();
-    // each pass can leave new ends near others (a split moves a vertex, a dropped piece frees
-    // an end): repeat until nothing is left to fix
-    for(int pass = 0; pass < 4; ++pass) {
-      snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
-      if(pass == 0) {
-        drop_covered_curves<Curve, Point_3>(curves, tol, report);
-        drop_parallel_duplicates<Curve, Point_3>(curves, tol, report);
-        // sharp turns first: the two legs of an acute turn are close, but they are not a contact
-        split_sharp_turns(curves, tol, options.maximum_angle, report);
-      }
-      split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
-      resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
-      clean_up();
-      if(find_contract_violations(curves, Contract_tolerances{tol, options.maximum_angle}).empty())
-        break;
-    }
-    const std::size_t closed_after = count_closed();
-    report.closed_loops = closed_after > closed_before ? closed_after - closed_before : 0;
-  } else {
-    clean_up();
+    split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
+    resolve_interior_contacts<Curve, Point_3>(curves, tol, report);
+    drop_degenerate_and_short(curves, settings, report);
+    if(find_contract_violations(curves, Contract_tolerances{tol, settings.maximum_angle}).empty())
+      break;
   }
+  const std::size_t closed_after = count_closed_loops(curves);
+  report.closed_loops = closed_after > closed_before ? closed_after - closed_before : 0;
   report.output_polylines = curves.size();
-  if(tol > 0)
-    drop_polylines_in_contact(curves, tol, report);
+  drop_polylines_in_contact(curves, tol, report);
   return report;
 }
+
 } // namespace mesh_polylines
 } // namespace internal
 } // namespace Sharp_feature_extraction

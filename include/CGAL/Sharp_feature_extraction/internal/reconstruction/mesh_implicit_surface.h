@@ -145,6 +145,119 @@ struct Surface_meshing_result
   std::string error;                  ///< empty on success
 };
 
+/// A thread that, while Mesh_3 runs, calls the heartbeat about 5 times per second and sets
+/// Mesh_3's stop flag at the time limit or when the heartbeat asks, and calls the unresponsive
+/// handler when Mesh_3 is still running long after the time limit.
+class Mesh_3_watchdog
+{
+public:
+  /// Mesh_3's stop flag.
+  std::atomic<bool> stop{false};
+
+  explicit Mesh_3_watchdog(const Surface_meshing_limits& limits)
+    : m_limits(limits), m_start(std::chrono::steady_clock::now()), m_thread([this] { watch(); })
+  {}
+  ~Mesh_3_watchdog() { finish(); }
+
+  /// stops watching (Mesh_3 returned).
+  void finish()
+  {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_done = true;
+    }
+    m_done_signal.notify_all();
+    if(m_thread.joinable())
+      m_thread.join();
+  }
+
+private:
+  void watch()
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    bool unresponsive_reported = false;
+    while(!m_done_signal.wait_for(lock, std::chrono::milliseconds(200), [this] { return m_done; })) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+      if(m_limits.heartbeat && !m_limits.heartbeat(seconds))
+        stop = true;
+      const double limit = m_limits.time_limit;
+      if(limit > 0 && seconds > limit)
+        stop = true;
+      // Mesh_3 5.5 reads the stop flag only while it refines. Stuck in the protection of the
+      // feature curves (pinion, 25k points, 0.5% noise, seed 5: in Polyline::locate for over
+      // 8 min) it never returns, and nothing can end it from outside but the process itself:
+      // the caller decides.
+      if(limit > 0 && seconds > unresponsive_time_limit_factor * limit && m_limits.unresponsive_handler &&
+         !unresponsive_reported) {
+        unresponsive_reported = true;
+        m_limits.unresponsive_handler(seconds);
+      }
+    }
+  }
+
+  const Surface_meshing_limits& m_limits;
+  const std::chrono::steady_clock::time_point m_start;
+  std::mutex m_mutex;
+  std::condition_variable m_done_signal;
+  bool m_done = false;
+  std::thread m_thread;
+};
+
+/// The shortest edge of a surface mesh: where a refinement that did not converge got stuck.
+template <typename Point_3>
+struct Shortest_edge
+{
+  double squared_length = std::numeric_limits<double>::infinity();
+  Point_3 midpoint = CGAL::ORIGIN;
+};
+
+/// copies the facets of the complex into `result.surface`, each oriented away from the cell
+/// that is inside the domain, and counts the protected vertices; returns the shortest edge.
+template <typename C3t3, typename Point_3>
+Shortest_edge<Point_3> collect_surface(const C3t3& c3t3, Surface_meshing_result<Point_3>& result)
+{
+  typedef typename C3t3::Triangulation Tr;
+  const Tr& tr = c3t3.triangulation();
+  auto point_of = [&tr](typename Tr::Vertex_handle v) { return tr.geom_traits().construct_point_3_object()(v->point()); };
+  std::map<typename Tr::Vertex_handle, std::size_t> index;
+  auto index_of = [&](typename Tr::Vertex_handle v) {
+    auto it = index.find(v);
+    if(it != index.end())
+      return it->second;
+    index[v] = result.surface.points.size();
+    result.surface.points.push_back(point_of(v));
+    return result.surface.points.size() - 1;
+  };
+  Shortest_edge<Point_3> shortest;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    typename Tr::Cell_handle cell = f->first;
+    int i = f->second;
+    if(!c3t3.is_in_complex(cell)) {
+      const typename Tr::Facet mirror = tr.mirror_facet(*f);
+      cell = mirror.first;
+      i = mirror.second;
+    }
+    Triangle_indices t = {index_of(cell->vertex((i + 1) & 3)), index_of(cell->vertex((i + 2) & 3)),
+                          index_of(cell->vertex((i + 3) & 3))};
+    const Point_3 inside = point_of(cell->vertex(i));
+    const std::vector<Point_3>& p = result.surface.points;
+    for(int k = 0; k < 3; ++k) {
+      const double l = CGAL::to_double(CGAL::squared_distance(p[t[k]], p[t[(k + 1) % 3]]));
+      if(l < shortest.squared_length) {
+        shortest.squared_length = l;
+        shortest.midpoint = CGAL::midpoint(p[t[k]], p[t[(k + 1) % 3]]);
+      }
+    }
+    if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
+      std::swap(t[1], t[2]);
+    result.surface.triangles.push_back(t);
+  }
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(v->in_dimension() == 0 || v->in_dimension() == 1)
+      ++result.protected_vertices;
+  return shortest;
+}
+
 /// meshes the boundary of { x in `bound` : `function`(x) < 0 } with Mesh_3, protecting the
 /// polylines `features` (each a `std::vector<Point_3>`; closed ones repeat their first point,
 /// curves meet only at shared end points: see `find_mesh_3_polyline_problems()`).
@@ -189,33 +302,7 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
                     params::facet_size = sizes.facet_size,
                     params::facet_distance = sizes.facet_distance);
 
-  // a watchdog thread reports progress and stops Mesh_3 through its stop flag, at the time
-  // limit or when asked to
-  std::atomic<bool> stop(false);
-  std::mutex mutex;
-  std::condition_variable done_signal;
-  bool done = false, unresponsive_reported = false;
-  const auto start = std::chrono::steady_clock::now();
-  std::thread watchdog([&] {
-    std::unique_lock<std::mutex> lock(mutex);
-    while(!done_signal.wait_for(lock, std::chrono::milliseconds(200), [&] { return done; })) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if(limits.heartbeat && !limits.heartbeat(seconds))
-        stop = true;
-      if(limits.time_limit > 0 && seconds > limits.time_limit)
-        stop = true;
-      // Mesh_3 5.5 reads the stop flag only while it refines. Stuck in the protection of the
-      // feature curves (pinion, 25k points, 0.5% noise, seed 5: in Polyline::locate for over
-      // 8 min) it never returns, and nothing can end it from outside but the process itself:
-      // the caller decides.
-      if(limits.time_limit > 0 && seconds > unresponsive_time_limit_factor * limits.time_limit &&
-         limits.unresponsive_handler && !unresponsive_reported) {
-        unresponsive_reported = true;
-        limits.unresponsive_handler(seconds);
-      }
-    }
-  });
-
+  Mesh_3_watchdog watchdog(limits);
   CGAL::Mesh_error_code error_code = CGAL::CGAL_MESH_3_NO_ERROR;
   C3t3 c3t3;
   try {
@@ -223,67 +310,23 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
       domain, criteria, params::no_perturb(), params::no_exude(), params::manifold(),
       params::mesh_3_options(params::maximal_number_of_vertices = limits.maximal_number_of_vertices,
                              params::pointer_to_error_code = &error_code,
-                             params::pointer_to_stop_atomic_boolean = &stop));
+                             params::pointer_to_stop_atomic_boolean = &watchdog.stop));
   } catch(const std::exception& e) {
     result.error = "Mesh_3 failed: " + first_line_of_failure(e.what());
   }
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    done = true;
-  }
-  done_signal.notify_all();
-  watchdog.join();
+  watchdog.finish();
   if(!result.error.empty())
     return result;
   if(error_code != CGAL::CGAL_MESH_3_NO_ERROR) {
     result.stopped = true;
     result.error = CGAL::mesh_error_string(error_code);
   }
-  // where the refinement got stuck: the shortest edge of the surface facets
-  double shortest = std::numeric_limits<double>::infinity();
-  Point_3 shortest_at = CGAL::ORIGIN;
-
-  // the facets of the complex, each oriented away from the cell that is inside the domain
-  const Tr& tr = c3t3.triangulation();
-  std::map<typename Tr::Vertex_handle, std::size_t> index;
-  auto index_of = [&](typename Tr::Vertex_handle v) {
-    auto it = index.find(v);
-    if(it != index.end())
-      return it->second;
-    index[v] = result.surface.points.size();
-    result.surface.points.push_back(tr.geom_traits().construct_point_3_object()(v->point()));
-    return result.surface.points.size() - 1;
-  };
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
-    typename Tr::Cell_handle cell = f->first;
-    int i = f->second;
-    if(!c3t3.is_in_complex(cell)) {
-      const typename Tr::Facet mirror = tr.mirror_facet(*f);
-      cell = mirror.first;
-      i = mirror.second;
-    }
-    Triangle_indices t = {index_of(cell->vertex((i + 1) & 3)), index_of(cell->vertex((i + 2) & 3)),
-                          index_of(cell->vertex((i + 3) & 3))};
-    const Point_3 inside = tr.geom_traits().construct_point_3_object()(cell->vertex(i)->point());
-    const std::vector<Point_3>& p = result.surface.points;
-    for(int k = 0; k < 3; ++k) {
-      const double l = CGAL::to_double(CGAL::squared_distance(p[t[k]], p[t[(k + 1) % 3]]));
-      if(l < shortest) {
-        shortest = l;
-        shortest_at = CGAL::midpoint(p[t[k]], p[t[(k + 1) % 3]]);
-      }
-    }
-    if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
-      std::swap(t[1], t[2]);
-    result.surface.triangles.push_back(t);
-  }
-  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    if(v->in_dimension() == 0 || v->in_dimension() == 1)
-      ++result.protected_vertices;
+  const Shortest_edge<Point_3> shortest = collect_surface(c3t3, result);
   if(result.stopped && !result.surface.triangles.empty()) {
     std::ostringstream where;
     where.precision(6);
-    where << " before converging; shortest mesh edge " << std::sqrt(shortest) << " at (" << shortest_at << ")";
+    where << " before converging; shortest mesh edge " << std::sqrt(shortest.squared_length) << " at ("
+          << shortest.midpoint << ")";
     result.error += where.str();
   }
   if(result.surface.triangles.empty() && result.error.empty())

@@ -395,9 +395,6 @@ reconstruct(const std::vector<typename GeomTraits::Point_3>& points, const Featu
   start = std::chrono::steady_clock::now();
   auto surface = mesh_with_mesh_3(function, bound, curves, points.size(), settings, progress, report);
   report.seconds_meshing = seconds_since(start);
-  if(surface.triangles.empty() && !report.stopped)
-    throw Surface_reconstruction_error(
-      "Mesh_3 found no surface (is the implicit function negative inside the bounding sphere?)");
   progress(1);
   return surface;
 }
