@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -351,4 +352,22 @@ TEST_CASE("a feature network without scales is refused with a documented excepti
   CHECK_THROWS_AS(CGAL::reconstruct_surface_with_sharp_features<CGAL::Sequential_tag>(cloud.points, network, points,
                                                                                       triangles),
                   CGAL::Surface_reconstruction_error);
+}
+
+TEST_CASE("a callback that returns false stops the reconstruction: the report says stopped and why, "
+          "and no surface is returned when it stops before Mesh_3",
+          "[meshing]")
+{
+  const Box_cloud& cloud = box_cloud(0);
+  std::vector<Point_3> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::size_t calls = 0;
+  const std::function<bool(double)> stop_at_once = [&calls](double) { return ++calls < 2; };
+  const CGAL::Surface_reconstruction_report<K> report =
+    CGAL::reconstruct_surface_with_sharp_features<CGAL::Sequential_tag>(
+      cloud.points, cloud.extracted.network, points, triangles, CGAL::parameters::callback(stop_at_once));
+  CHECK(report.stopped);
+  CHECK(report.stop_reason == "cancelled by the callback");
+  CHECK(triangles.empty());
+  CHECK(report.seconds_meshing == 0);
 }
