@@ -52,7 +52,8 @@ find_program() {
   local found
   found="$(find "$build" -type f -name "$1" -perm -u+x 2>/dev/null | head -n 1)"
   if [ -z "$found" ]; then
-    echo "bench_meshing.sh: $1 not found under $build (build it, or pass --build DIR)" >&2
+    echo "bench_meshing.sh: $1 not found under $build (build it: mesh_with_sharp_features with" \
+         "-DSFE_BUILD_MESHING=ON, measure_mesh_against_truth with -DSFE_BUILD_BENCHMARK=ON; or pass --build DIR)" >&2
     exit 1
   fi
   echo "$found"
@@ -180,7 +181,8 @@ done
   echo "(seeds: $seeds); noise: radius of a uniform ball,"
   echo "fraction of the bounding-box diagonal dB. Pipeline: jet normals oriented along the sheets of the"
   echo "surface (a minimum spanning tree that does not cross thin walls), Poisson implicit function,"
-  echo "Mesh_3 (facet size 3s, facet distance 0.1s, edge size 3s, angle 25; s = spacing), manifold."
+  echo "Mesh_3 (facet size 3s, facet distance 0.1s, edge size 3s, angle 25; s = the extraction's spacing / 1.6,"
+  echo "about the mean distance to the 6 nearest neighbours), manifold."
   echo "*plain*: \`--no-features\`; *features*: curves protected, two-sided normals near the curves,"
   echo "implicit function sharpened near the curves where both sides of the crease could be fitted,"
   echo "every protected vertex moved onto the implicit surface (a curve that is not on it is dropped)."

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
 // A local model of the two surfaces meeting along each feature curve.
 //
 // Poisson reconstruction (like any smooth implicit fit) rounds creases: its normals come from
@@ -13,10 +16,10 @@
 // Far from the curves the model says nothing and the smooth function is used unchanged; in
 // between, the two are blended.
 
-#ifndef SFE_MESHING_CREASE_MODEL_H
-#define SFE_MESHING_CREASE_MODEL_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_CREASE_MODEL_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_CREASE_MODEL_H
 
-#include "meshing/spatial_grid.h"
+#include <CGAL/Sharp_feature_extraction/internal/Spatial_grid.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
@@ -31,7 +34,10 @@
 #include <cstddef>
 #include <vector>
 
-namespace sfe_meshing {
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+namespace reconstruction {
 
 /// Radii of the crease model, as absolute distances. `for_spacing()` gives the defaults as
 /// multiples of the sampling spacing s (mean distance to the 6th nearest neighbour).
@@ -483,6 +489,9 @@ struct Crease_sharpened_function
   }
 };
 
-} // namespace sfe_meshing
+} // namespace reconstruction
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
 
-#endif // SFE_MESHING_CREASE_MODEL_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_CREASE_MODEL_H

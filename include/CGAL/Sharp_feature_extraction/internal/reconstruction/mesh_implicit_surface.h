@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
 // Surface meshing of an implicit function with Mesh_3, the feature curves protected.
 //
 // The domain is a Labeled_mesh_domain_3 over the implicit function (negative inside), wrapped
@@ -6,12 +9,11 @@
 // the Delaunay refinement of the surface then cannot cut across a crease. Without curves the
 // very same domain, criteria and options run, so the two results compare one thing only.
 //
-// This header is the only one of the example that includes Mesh_3 (a heavy compilation).
+// This header is the only one of the package that includes Mesh_3 (a heavy compilation).
 
-#ifndef SFE_MESHING_FEATURE_PROTECTED_MESHING_H
-#define SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H
 
-#include "meshing/surface_mesh_checks.h"
 
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
@@ -23,14 +25,13 @@
 #include <CGAL/make_mesh_3.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstddef>
-#include <cstdlib>
 #include <functional>
-#include <iostream>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -39,10 +40,12 @@
 #include <thread>
 #include <vector>
 
-namespace sfe_meshing {
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+namespace reconstruction {
 
-/// Mesh_3 criteria, as absolute lengths (`Point_cloud_meshing_options` derives them from the
-/// sampling spacing).
+/// Mesh_3 criteria, as absolute lengths (derived from the sampling spacing unless given).
 struct Mesh_sizes
 {
   double edge_size = 0;      ///< largest protecting ball / mesh edge along a feature curve
@@ -54,7 +57,7 @@ struct Mesh_sizes
 struct Surface_meshing_limits
 {
   double time_limit = 0;                  ///< seconds; 0: none
-  /// 0: none (`mesh_point_cloud()` sets one from the number of input points)
+  /// 0: none (the reconstruction sets one from the number of input points)
   std::size_t maximal_number_of_vertices = 0;
   double relative_error_bound = 1e-6;     ///< of the surface intersections, relative to the bounding sphere
   unsigned seed = 0;                      ///< of Mesh_3's random initial points
@@ -64,6 +67,13 @@ struct Surface_meshing_limits
   /// order, is lifted too.
   double far_field_margin = 10;
   int far_field_samples = 32;
+  /// Called about 5 times per second while Mesh_3 runs, with the seconds elapsed; returning
+  /// false stops Mesh_3 (read only while it refines).
+  std::function<bool(double)> heartbeat;
+  /// Called once, with the seconds elapsed, when Mesh_3 is still at work at
+  /// `unresponsive_time_limit_factor` times the time limit (stuck where it does not read its
+  /// stop flag). Empty: keep waiting.
+  std::function<void(double)> unresponsive_handler;
 };
 
 /// the largest of 0 and -f on a `samples` x `samples` grid on each face of the cube of half
@@ -87,13 +97,13 @@ double far_field_level(const Function& f, const Point_3& center, double radius, 
   return level;
 }
 
-/// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
-/// else its first line and the failed expression): the message spans a dozen lines of file,
-/// line and debugging data.
 /// Beyond this multiple of the time limit, Mesh_3 is taken as stuck where it does not read its
 /// stop flag (see mesh_implicit_surface()): twice the limit leaves it the whole limit to answer.
 constexpr double unresponsive_time_limit_factor = 2;
 
+/// the one line of a CGAL failure message that says what went wrong (its "Explanation:", or
+/// else its first line and the failed expression): the message spans a dozen lines of file,
+/// line and debugging data.
 inline std::string first_line_of_failure(const std::string& message)
 {
   auto line_after = [&](const std::string& key) -> std::string {
@@ -115,6 +125,8 @@ inline std::string first_line_of_failure(const std::string& message)
   return expression.empty() ? first : first + " (" + expression + ")";
 }
 
+typedef std::array<std::size_t, 3> Triangle_indices;
+
 /// A closed surface as a triangle soup, facets oriented outward.
 template <typename Point_3>
 struct Triangle_soup_3
@@ -133,10 +145,122 @@ struct Surface_meshing_result
   std::string error;                  ///< empty on success
 };
 
+/// A thread that, while Mesh_3 runs, calls the heartbeat about 5 times per second and sets
+/// Mesh_3's stop flag at the time limit or when the heartbeat asks, and calls the unresponsive
+/// handler when Mesh_3 is still running long after the time limit.
+class Mesh_3_watchdog
+{
+public:
+  /// Mesh_3's stop flag.
+  std::atomic<bool> stop{false};
+
+  explicit Mesh_3_watchdog(const Surface_meshing_limits& limits)
+    : m_limits(limits), m_start(std::chrono::steady_clock::now()), m_thread([this] { watch(); })
+  {}
+  ~Mesh_3_watchdog() { finish(); }
+
+  /// stops watching (Mesh_3 returned).
+  void finish()
+  {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_done = true;
+    }
+    m_done_signal.notify_all();
+    if(m_thread.joinable())
+      m_thread.join();
+  }
+
+private:
+  void watch()
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    bool unresponsive_reported = false;
+    while(!m_done_signal.wait_for(lock, std::chrono::milliseconds(200), [this] { return m_done; })) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+      if(m_limits.heartbeat && !m_limits.heartbeat(seconds))
+        stop = true;
+      const double limit = m_limits.time_limit;
+      if(limit > 0 && seconds > limit)
+        stop = true;
+      // Mesh_3 5.5 reads the stop flag only while it refines. Stuck in the protection of the
+      // feature curves (pinion, 25k points, 0.5% noise, seed 5: in Polyline::locate for over
+      // 8 min) it never returns, and nothing can end it from outside but the process itself:
+      // the caller decides.
+      if(limit > 0 && seconds > unresponsive_time_limit_factor * limit && m_limits.unresponsive_handler &&
+         !unresponsive_reported) {
+        unresponsive_reported = true;
+        m_limits.unresponsive_handler(seconds);
+      }
+    }
+  }
+
+  const Surface_meshing_limits& m_limits;
+  const std::chrono::steady_clock::time_point m_start;
+  std::mutex m_mutex;
+  std::condition_variable m_done_signal;
+  bool m_done = false;
+  std::thread m_thread;
+};
+
+/// The shortest edge of a surface mesh: where a refinement that did not converge got stuck.
+template <typename Point_3>
+struct Shortest_edge
+{
+  double squared_length = std::numeric_limits<double>::infinity();
+  Point_3 midpoint = CGAL::ORIGIN;
+};
+
+/// copies the facets of the complex into `result.surface`, each oriented away from the cell
+/// that is inside the domain, and counts the protected vertices; returns the shortest edge.
+template <typename C3t3, typename Point_3>
+Shortest_edge<Point_3> collect_surface(const C3t3& c3t3, Surface_meshing_result<Point_3>& result)
+{
+  typedef typename C3t3::Triangulation Tr;
+  const Tr& tr = c3t3.triangulation();
+  auto point_of = [&tr](typename Tr::Vertex_handle v) { return tr.geom_traits().construct_point_3_object()(v->point()); };
+  std::map<typename Tr::Vertex_handle, std::size_t> index;
+  auto index_of = [&](typename Tr::Vertex_handle v) {
+    auto it = index.find(v);
+    if(it != index.end())
+      return it->second;
+    index[v] = result.surface.points.size();
+    result.surface.points.push_back(point_of(v));
+    return result.surface.points.size() - 1;
+  };
+  Shortest_edge<Point_3> shortest;
+  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
+    typename Tr::Cell_handle cell = f->first;
+    int i = f->second;
+    if(!c3t3.is_in_complex(cell)) {
+      const typename Tr::Facet mirror = tr.mirror_facet(*f);
+      cell = mirror.first;
+      i = mirror.second;
+    }
+    Triangle_indices t = {index_of(cell->vertex((i + 1) & 3)), index_of(cell->vertex((i + 2) & 3)),
+                          index_of(cell->vertex((i + 3) & 3))};
+    const Point_3 inside = point_of(cell->vertex(i));
+    const std::vector<Point_3>& p = result.surface.points;
+    for(int k = 0; k < 3; ++k) {
+      const double l = CGAL::to_double(CGAL::squared_distance(p[t[k]], p[t[(k + 1) % 3]]));
+      if(l < shortest.squared_length) {
+        shortest.squared_length = l;
+        shortest.midpoint = CGAL::midpoint(p[t[k]], p[t[(k + 1) % 3]]);
+      }
+    }
+    if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
+      std::swap(t[1], t[2]);
+    result.surface.triangles.push_back(t);
+  }
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(v->in_dimension() == 0 || v->in_dimension() == 1)
+      ++result.protected_vertices;
+  return shortest;
+}
+
 /// meshes the boundary of { x in `bound` : `function`(x) < 0 } with Mesh_3, protecting the
 /// polylines `features` (each a `std::vector<Point_3>`; closed ones repeat their first point,
-/// curves meet only at shared end points: see `repair_feature_curves_for_mesh_3()`).
-/// `heartbeat(seconds)` is called about 5 times per second while Mesh_3 runs.
+/// curves meet only at shared end points: see `find_mesh_3_polyline_problems()`).
 ///
 /// The function must be positive on the faces of the cube around `bound`, which bounds the
 /// domain. An implicit function fitted to samples (Poisson's) is zero far from them up to the
@@ -150,8 +274,7 @@ template <typename GeomTraits, typename Function>
 Surface_meshing_result<typename GeomTraits::Point_3>
 mesh_implicit_surface(const Function& function, const typename GeomTraits::Sphere_3& bound,
                       const std::vector<std::vector<typename GeomTraits::Point_3>>& features,
-                      const Mesh_sizes& sizes, const Surface_meshing_limits& limits,
-                      const std::function<void(double)>& heartbeat = {})
+                      const Mesh_sizes& sizes, const Surface_meshing_limits& limits)
 {
   typedef typename GeomTraits::Point_3 Point_3;
   typedef CGAL::Labeled_mesh_domain_3<GeomTraits> Implicit_domain;
@@ -179,31 +302,7 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
                     params::facet_size = sizes.facet_size,
                     params::facet_distance = sizes.facet_distance);
 
-  // a watchdog thread reports progress and enforces the time limit through Mesh_3's stop flag
-  std::atomic<bool> stop(false);
-  std::mutex mutex;
-  std::condition_variable done_signal;
-  bool done = false;
-  const auto start = std::chrono::steady_clock::now();
-  std::thread watchdog([&] {
-    std::unique_lock<std::mutex> lock(mutex);
-    while(!done_signal.wait_for(lock, std::chrono::milliseconds(200), [&] { return done; })) {
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if(heartbeat)
-        heartbeat(seconds);
-      if(limits.time_limit > 0 && seconds > limits.time_limit)
-        stop = true;
-      // Mesh_3 5.5 reads the stop flag only while it refines. Stuck in the protection of the
-      // feature curves (pinion, 25k points, 0.5% noise, seed 5: in Polyline::locate for over
-      // 8 min) it never returns, and nothing can end it from outside but the process itself.
-      if(limits.time_limit > 0 && seconds > unresponsive_time_limit_factor * limits.time_limit) {
-        std::cerr << "Mesh_3 failed: still protecting the feature curves " << seconds
-                  << " s after the start, past its time limit of " << limits.time_limit << " s" << std::endl;
-        std::_Exit(EXIT_FAILURE);
-      }
-    }
-  });
-
+  Mesh_3_watchdog watchdog(limits);
   CGAL::Mesh_error_code error_code = CGAL::CGAL_MESH_3_NO_ERROR;
   C3t3 c3t3;
   try {
@@ -211,67 +310,23 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
       domain, criteria, params::no_perturb(), params::no_exude(), params::manifold(),
       params::mesh_3_options(params::maximal_number_of_vertices = limits.maximal_number_of_vertices,
                              params::pointer_to_error_code = &error_code,
-                             params::pointer_to_stop_atomic_boolean = &stop));
+                             params::pointer_to_stop_atomic_boolean = &watchdog.stop));
   } catch(const std::exception& e) {
     result.error = "Mesh_3 failed: " + first_line_of_failure(e.what());
   }
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    done = true;
-  }
-  done_signal.notify_all();
-  watchdog.join();
+  watchdog.finish();
   if(!result.error.empty())
     return result;
   if(error_code != CGAL::CGAL_MESH_3_NO_ERROR) {
     result.stopped = true;
     result.error = CGAL::mesh_error_string(error_code);
   }
-  // where the refinement got stuck: the shortest edge of the surface facets
-  double shortest = std::numeric_limits<double>::infinity();
-  Point_3 shortest_at = CGAL::ORIGIN;
-
-  // the facets of the complex, each oriented away from the cell that is inside the domain
-  const Tr& tr = c3t3.triangulation();
-  std::map<typename Tr::Vertex_handle, std::size_t> index;
-  auto index_of = [&](typename Tr::Vertex_handle v) {
-    auto it = index.find(v);
-    if(it != index.end())
-      return it->second;
-    index[v] = result.surface.points.size();
-    result.surface.points.push_back(tr.geom_traits().construct_point_3_object()(v->point()));
-    return result.surface.points.size() - 1;
-  };
-  for(auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f) {
-    typename Tr::Cell_handle cell = f->first;
-    int i = f->second;
-    if(!c3t3.is_in_complex(cell)) {
-      const typename Tr::Facet mirror = tr.mirror_facet(*f);
-      cell = mirror.first;
-      i = mirror.second;
-    }
-    Triangle_indices t = {index_of(cell->vertex((i + 1) & 3)), index_of(cell->vertex((i + 2) & 3)),
-                          index_of(cell->vertex((i + 3) & 3))};
-    const Point_3 inside = tr.geom_traits().construct_point_3_object()(cell->vertex(i)->point());
-    const std::vector<Point_3>& p = result.surface.points;
-    for(int k = 0; k < 3; ++k) {
-      const double l = CGAL::to_double(CGAL::squared_distance(p[t[k]], p[t[(k + 1) % 3]]));
-      if(l < shortest) {
-        shortest = l;
-        shortest_at = CGAL::midpoint(p[t[k]], p[t[(k + 1) % 3]]);
-      }
-    }
-    if(CGAL::orientation(p[t[0]], p[t[1]], p[t[2]], inside) == CGAL::POSITIVE)
-      std::swap(t[1], t[2]);
-    result.surface.triangles.push_back(t);
-  }
-  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    if(v->in_dimension() == 0 || v->in_dimension() == 1)
-      ++result.protected_vertices;
+  const Shortest_edge<Point_3> shortest = collect_surface(c3t3, result);
   if(result.stopped && !result.surface.triangles.empty()) {
     std::ostringstream where;
     where.precision(6);
-    where << " before converging; shortest mesh edge " << std::sqrt(shortest) << " at (" << shortest_at << ")";
+    where << " before converging; shortest mesh edge " << std::sqrt(shortest.squared_length) << " at ("
+          << shortest.midpoint << ")";
     result.error += where.str();
   }
   if(result.surface.triangles.empty() && result.error.empty())
@@ -279,6 +334,9 @@ mesh_implicit_surface(const Function& function, const typename GeomTraits::Spher
   return result;
 }
 
-} // namespace sfe_meshing
+} // namespace reconstruction
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
 
-#endif // SFE_MESHING_FEATURE_PROTECTED_MESHING_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_MESH_IMPLICIT_SURFACE_H

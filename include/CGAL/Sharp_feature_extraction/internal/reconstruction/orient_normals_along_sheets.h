@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
 // Consistent orientation of unoriented normals that does not cross thin walls.
 //
 // CGAL::mst_orient_normals() propagates an orientation along the minimum spanning tree of the
@@ -16,8 +19,8 @@
 // the rim of a wall rather than through it. Otherwise the propagation is Hoppe's: from the
 // highest point, oriented up, each tree edge keeps n_i . n_j > 0.
 
-#ifndef SFE_MESHING_ORIENT_NORMALS_ALONG_SHEETS_H
-#define SFE_MESHING_ORIENT_NORMALS_ALONG_SHEETS_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_ORIENT_NORMALS_ALONG_SHEETS_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_ORIENT_NORMALS_ALONG_SHEETS_H
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -36,7 +39,10 @@
 #include <utility>
 #include <vector>
 
-namespace sfe_meshing {
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+namespace reconstruction {
 
 /// orients the unit `normals` of `points` consistently, by propagation over the `k` nearest
 /// neighbours (see the file comment for the weights). Returns, per point, whether it was
@@ -114,6 +120,9 @@ std::vector<bool> orient_normals_along_sheets(const std::vector<typename GeomTra
   return reached;
 }
 
-} // namespace sfe_meshing
+} // namespace reconstruction
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
 
-#endif // SFE_MESHING_ORIENT_NORMALS_ALONG_SHEETS_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_RECONSTRUCTION_ORIENT_NORMALS_ALONG_SHEETS_H

@@ -13,12 +13,13 @@
 #ifndef SFE_MESHING_MESH_MEASUREMENT_H
 #define SFE_MESHING_MESH_MEASUREMENT_H
 
-#include "meshing/spatial_grid.h"
-#include "meshing/surface_mesh_checks.h"
+#include "utilities/surface_mesh_checks.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
 
 #include <algorithm>
 #include <array>
@@ -115,25 +116,26 @@ public:
   /// distance from `p` to the nearest true crease, if it is below `radius`; else `radius`.
   double distance_to_creases(const Point_3& p, double radius) const
   {
-    double d2 = 0;
-    if(m_crease_grid.nearest_within(p, radius, &d2) == Spatial_grid<Point_3>::none)
+    if(m_crease_samples.empty())
       return radius;
-    return std::sqrt(d2);
+    Crease_search nearest(m_crease_samples, p, 1);
+    const double d = std::sqrt(CGAL::to_double(nearest.begin()->second));
+    return (std::min)(d, radius);
   }
 
-  /// points the crease grid: call once with the band radius before `distance_to_creases()`.
+  /// samples the true creases: call once with the band radius before `distance_to_creases()`.
   void prepare_band(double radius)
   {
-    m_crease_grid = Spatial_grid<Point_3>(radius);
+    m_crease_samples.clear();
     // samples dense enough that the nearest sample is within 2% of the radius of the nearest point
     const double step = 0.04 * radius;
-    std::size_t id = 0;
     for(const Crease_edge& e : m_creases) {
       const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(e.a, e.b)));
       const std::size_t n = (std::max)(std::size_t(1), static_cast<std::size_t>(std::ceil(l / step)));
       for(std::size_t i = 0; i <= n; ++i)
-        m_crease_grid.insert(e.a + (double(i) / n) * (e.b - e.a), id++);
+        m_crease_samples.insert(e.a + (double(i) / n) * (e.b - e.a));
     }
+    m_crease_samples.build();
   }
 
   static Vector_3 unit(const Vector_3& v)
@@ -202,7 +204,8 @@ private:
   std::vector<Crease_edge> m_creases;
   std::vector<Point_3> m_junctions;
   Tree m_tree;
-  Spatial_grid<Point_3> m_crease_grid;
+  typedef CGAL::Orthogonal_k_neighbor_search<CGAL::Search_traits_3<GeomTraits>> Crease_search;
+  typename Crease_search::Tree m_crease_samples;
   double m_diagonal = 1;
 };
 

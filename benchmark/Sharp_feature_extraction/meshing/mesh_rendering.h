@@ -5,7 +5,7 @@
 #ifndef SFE_MESHING_MESH_RENDERING_H
 #define SFE_MESHING_MESH_RENDERING_H
 
-#include "meshing/surface_mesh_checks.h"
+#include "utilities/surface_mesh_checks.h"
 #include "utilities/png_image.h"
 
 #include <CGAL/number_utils.h>

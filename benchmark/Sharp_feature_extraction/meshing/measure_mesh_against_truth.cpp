@@ -10,9 +10,9 @@
 //   measure_mesh_against_truth --truth fandisk.off --true-curves-to curves.txt
 //       writes the true creases as curves with their two normals (mesh_with_sharp_features --curves).
 
-#include "meshing/mesh_measurement.h"
-#include "meshing/mesh_rendering.h"
-#include "meshing/surface_mesh_checks.h"
+#include "mesh_measurement.h"
+#include "mesh_rendering.h"
+#include "utilities/surface_mesh_checks.h"
 #include "utilities/mesh_surface_sampling.h"
 #include "utilities/png_image.h"
 

@@ -1,3 +1,6 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
 // A uniform hash grid over 3D points for fixed-radius queries.
 //
 // The meshing helpers ask two kinds of questions many times: "which points lie within r of x"
@@ -5,8 +8,8 @@
 // implicit-function evaluations during Mesh_3). With the cell size equal to the query radius,
 // both look at the 27 cells around x, which is faster than a kd-tree for these small radii.
 
-#ifndef SFE_MESHING_SPATIAL_GRID_H
-#define SFE_MESHING_SPATIAL_GRID_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_SPATIAL_GRID_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_SPATIAL_GRID_H
 
 #include <array>
 #include <cmath>
@@ -16,7 +19,9 @@
 #include <unordered_map>
 #include <vector>
 
-namespace sfe_meshing {
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
 
 /// Points stored by index in cubic cells of side `cell_size`.
 template <typename Point_3>
@@ -99,6 +104,8 @@ private:
   std::unordered_map<std::uint64_t, std::vector<Entry>> m_cells;
 };
 
-} // namespace sfe_meshing
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
 
-#endif // SFE_MESHING_SPATIAL_GRID_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_SPATIAL_GRID_H

@@ -1,0 +1,235 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What Mesh_3 needs of the polylines it protects (Mesh_domain_with_polyline_features_3), in one
+// place: the constants of the contract and the geometric tests that `find_mesh_3_polyline_problems()`
+// checks and `repair_polylines_for_mesh_3()` repairs.
+//
+// Mesh_domain_with_polyline_features_3 trusts its input: two curves that meet must share the
+// meeting point exactly, a closed curve must repeat its first point exactly, and curves must
+// not touch anywhere else. Near-misses (an end 1e-6 away from a corner, a loop that stops
+// short, two curves crossing between vertices) make the protecting-ball stage fail an
+// assertion or refine forever; a sharp turn inside one polyline is rounded off by its
+// protecting balls.
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_CONTRACT_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_CONTRACT_H
+
+#include <CGAL/Sharp_feature_extraction/internal/Spatial_grid.h>
+
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+namespace mesh_polylines {
+
+/// The numbers of the contract. Distances are multiples of the contract's tolerance (the
+/// `threshold_distance` of the public functions: the distance below which two vertices of the
+/// protected polylines must be one point).
+struct Mesh_polyline_contract
+{
+  /// A polyline that turns by more than this angle (degrees) is split there: Mesh_3's
+  /// protecting balls round a sharp turn inside one polyline off, while a corner shared by two
+  /// polylines is kept. The same threshold as stage 5 of the extraction (completion), so that
+  /// extracted curves already satisfy it.
+  static constexpr double sharp_turn_angle = 60;
+  /// Near a point two curves share, their vertices are close because both curves start there;
+  /// they are fine as long as the curves leave it at an angle (then the gap grows like the
+  /// distance to the junction times the angle). Below this angle (degrees) the two run together:
+  /// Mesh_3's protecting balls there must shrink to the gap, and the refinement around them runs
+  /// away. Noisy extracted curves leaving one corner differ by more than that.
+  static constexpr double minimum_departure_angle = 5;
+  /// Consecutive vertices closer than this fraction of the tolerance are one point (a
+  /// zero-length segment for Mesh_3).
+  static constexpr double merge_fraction = 1e-3;
+  /// Vertices are at most this fraction of the tolerance apart before the proximity tests, so
+  /// that "near a vertex" is "near the polyline".
+  static constexpr double densify_fraction = 0.5;
+  /// Along one polyline, vertices closer than this many tolerances of arc length are
+  /// neighbours, not a contact of the polyline with itself.
+  static constexpr double same_curve_separation = 4;
+};
+
+template <typename Point_3>
+bool is_finite_point(const Point_3& p)
+{
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
+         std::isfinite(CGAL::to_double(p.z()));
+}
+
+template <typename Point_3>
+double point_distance(const Point_3& a, const Point_3& b)
+{
+  return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+}
+
+template <typename Curve>
+double curve_length(const Curve& c)
+{
+  double l = 0;
+  for(std::size_t i = 1; i < c.points.size(); ++i)
+    l += point_distance(c.points[i - 1], c.points[i]);
+  return l;
+}
+
+/// arc length from the front to every vertex.
+template <typename Curve>
+std::vector<double> arc_lengths(const Curve& c)
+{
+  std::vector<double> s(c.points.size(), 0.);
+  for(std::size_t i = 1; i < c.points.size(); ++i)
+    s[i] = s[i - 1] + point_distance(c.points[i - 1], c.points[i]);
+  return s;
+}
+
+/// inserts vertices on the segments longer than `max_step`, so that "near a vertex" tests are
+/// also "near the curve" tests. The polyline keeps its exact shape.
+template <typename Curve>
+void densify(Curve& c, double max_step)
+{
+  if(!(max_step > 0) || c.points.size() < 2)
+    return;
+  const bool with_normals = c.normals.size() == c.points.size();
+  Curve out = c;
+  out.points.assign(1, c.points.front());
+  out.normals.clear();
+  if(with_normals)
+    out.normals.push_back(c.normals.front());
+  for(std::size_t i = 1; i < c.points.size(); ++i) {
+    const auto& a = c.points[i - 1];
+    const auto& b = c.points[i];
+    const std::size_t pieces = static_cast<std::size_t>(std::ceil(point_distance(a, b) / max_step));
+    for(std::size_t j = 1; j < pieces; ++j) {
+      const double t = double(j) / pieces;
+      out.points.push_back(a + t * (b - a));
+      if(with_normals) {
+        auto n = c.normals[i - 1];
+        for(int k = 0; k < 2; ++k) {
+          const auto m = (1 - t) * c.normals[i - 1][k] + t * c.normals[i][k];
+          const double l = std::sqrt(CGAL::to_double(m.squared_length()));
+          n[k] = l > 0 ? m / l : c.normals[i - 1][k];
+        }
+        out.normals.push_back(n);
+      }
+    }
+    out.points.push_back(b);
+    if(with_normals)
+      out.normals.push_back(c.normals[i]);
+  }
+  c = std::move(out);
+}
+
+/// Two vertices closer than the tolerance that are not the same point, on two curves (or far
+/// apart along one curve), and not explained by a junction the curves share.
+struct Unshared_contact
+{
+  std::size_t a = 0, i = 0, b = 0, j = 0; // curve and vertex index of each vertex
+  double distance = 0;
+};
+
+/// lists the vertex pairs Mesh_3 cannot protect apart: closer than `tol`, not the same point,
+/// and not two curves leaving a shared point at
+/// `Mesh_polyline_contract::minimum_departure_angle` or more.
+template <typename Curve, typename Point_3>
+std::vector<Unshared_contact> find_unshared_contacts(const std::vector<Curve>& curves, double tol)
+{
+  const double sin_departure = std::sin(Mesh_polyline_contract::minimum_departure_angle * CGAL_PI / 180.);
+  std::vector<std::pair<std::size_t, std::size_t>> vertices;
+  Spatial_grid<Point_3> grid(tol);
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    for(std::size_t i = 0; i < curves[c].points.size(); ++i) {
+      grid.insert(curves[c].points[i], vertices.size());
+      vertices.push_back(std::make_pair(c, i));
+    }
+  std::vector<std::vector<double>> arcs;
+  for(const Curve& c : curves)
+    arcs.push_back(arc_lengths(c));
+  std::vector<Unshared_contact> contacts;
+  for(std::size_t id = 0; id < vertices.size(); ++id) {
+    const std::size_t a = vertices[id].first, i = vertices[id].second;
+    const Point_3& pa = curves[a].points[i];
+    grid.for_each_within(pa, tol, [&](std::size_t other, double d2) {
+      const std::size_t b = vertices[other].first, j = vertices[other].second;
+      if(other <= id || curves[b].points[j] == pa)
+        return;
+      const Point_3& pb = curves[b].points[j];
+      const double d = std::sqrt(d2);
+      // along one curve, neighbours are close: only far-apart stretches count (cyclically on
+      // a loop)
+      if(a == b) {
+        const double along = std::abs(arcs[a][i] - arcs[a][j]);
+        const bool closed = curves[a].points.front() == curves[a].points.back();
+        if((std::min)(along, closed ? arcs[a].back() - along : along) < Mesh_polyline_contract::same_curve_separation * tol)
+          return;
+      }
+      for(const Point_3* e : {&curves[a].points.front(), &curves[a].points.back()})
+        if(*e == curves[b].points.front() || *e == curves[b].points.back()) {
+          const double r = (std::max)(point_distance(pa, *e), point_distance(pb, *e));
+          if(d >= sin_departure * r)
+            return;
+        }
+      contacts.push_back(Unshared_contact{a, i, b, j, d});
+    });
+  }
+  return contacts;
+}
+
+/// The vertices where a polyline turns by more than `angle_degrees`, measured between chords
+/// reaching at least `reach` along the curve on each side (so that vertex noise does not count
+/// as a turn): one vertex per run of sharp vertices, the sharpest. With `away_from_ends`, only
+/// the vertices farther than `reach` from both ends count: closer, a turn is below the
+/// resolution of the tolerance (a snapped end moves its first segment by up to one tolerance).
+template <typename Curve>
+std::vector<std::size_t> sharp_turn_vertices(const Curve& curve, double reach, double angle_degrees,
+                                             bool away_from_ends = false)
+{
+  const double cos_limit = std::cos(angle_degrees * CGAL_PI / 180.);
+  const std::vector<double> s = arc_lengths(curve);
+  const std::size_t n = curve.points.size();
+  std::vector<double> turn(n, 1.);
+  for(std::size_t i = 1; i + 1 < n; ++i) {
+    std::size_t a = i, b = i;
+    while(a > 0 && s[i] - s[a] < reach)
+      --a;
+    while(b + 1 < n && s[b] - s[i] < reach)
+      ++b;
+    const auto u = curve.points[i] - curve.points[a];
+    const auto v = curve.points[b] - curve.points[i];
+    const double nu = std::sqrt(CGAL::to_double(u.squared_length()));
+    const double nv = std::sqrt(CGAL::to_double(v.squared_length()));
+    const bool measured = !away_from_ends || (s[i] >= reach && s.back() - s[i] >= reach);
+    if(nu > 0 && nv > 0 && measured)
+      turn[i] = CGAL::to_double(u * v) / (nu * nv);
+  }
+  std::vector<std::size_t> sharpest_of_runs;
+  for(std::size_t i = 1; i + 1 < n;) {
+    if(turn[i] >= cos_limit) {
+      ++i;
+      continue;
+    }
+    std::size_t sharpest = i;
+    while(i + 1 < n && turn[i] < cos_limit) {
+      if(turn[i] < turn[sharpest])
+        sharpest = i;
+      ++i;
+    }
+    sharpest_of_runs.push_back(sharpest);
+  }
+  return sharpest_of_runs;
+}
+
+} // namespace mesh_polylines
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_CONTRACT_H
