@@ -27,6 +27,8 @@ enum completion_distance_t { completion_distance };
 /// \endcode
 namespace parameters {
 
+// Declares a named parameter of the package (kept defined: the reconstruction header declares
+// its own with it too).
 #define CGAL_SFE_NAMED_PARAMETER(NAME)                                                         \
   template <typename T, typename NP = CGAL::parameters::Default_named_parameters>              \
   CGAL::Named_function_parameters<T, internal_np::NAME##_t, NP>                                 \
@@ -51,8 +53,6 @@ CGAL_SFE_NAMED_PARAMETER(growth_radius)
 /// Largest gap bridged by completion. Default: 7 times the sampling spacing, and at least
 /// 3 times the growth radius.
 CGAL_SFE_NAMED_PARAMETER(completion_distance)
-
-#undef CGAL_SFE_NAMED_PARAMETER
 
 } // namespace parameters
 } // namespace Sharp_feature_extraction

@@ -11,6 +11,7 @@
 #include <CGAL/Sharp_feature_extraction/Surface_reconstruction_report.h>
 #include <CGAL/Sharp_feature_extraction/internal/reconstruction/reconstruction_impl.h>
 
+#include <CGAL/Sharp_feature_extraction/parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
@@ -36,35 +37,25 @@ enum unresponsive_mesher_handler_t { unresponsive_mesher_handler };
 
 namespace parameters {
 
-#define CGAL_SFE_RECONSTRUCTION_PARAMETER(NAME)                                                \
-  template <typename T, typename NP = CGAL::parameters::Default_named_parameters>              \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t, NP>                                 \
-  NAME(const T& value, const NP& base = CGAL::parameters::default_values())                    \
-  {                                                                                            \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t, NP>(value, base);         \
-  }
-
 /// \ingroup PkgSharpFeatureExtractionRef
 /// Named parameters of `reconstruct_surface_with_sharp_features()` that CGAL's own list does
 /// not have; they chain with CGAL's parameters like those of `parameters.h`.
 /// Protect the polylines in Mesh_3 (a `bool`).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(protect_polylines)
+CGAL_SFE_NAMED_PARAMETER(protect_polylines)
 /// Give the points near a polyline the normal of their own side of the crease (a `bool`).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(correct_normals)
+CGAL_SFE_NAMED_PARAMETER(correct_normals)
 /// Replace the implicit function near the polylines by the two surfaces that meet there (a `bool`).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(sharpen_creases)
+CGAL_SFE_NAMED_PARAMETER(sharpen_creases)
 /// Mesh_3's largest radius of a surface Delaunay ball (a length).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(facet_size)
+CGAL_SFE_NAMED_PARAMETER(facet_size)
 /// Mesh_3's largest distance from a facet to the surface (a length).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(facet_distance)
+CGAL_SFE_NAMED_PARAMETER(facet_distance)
 /// Mesh_3's largest mesh edge along a protected polyline (a length).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(edge_size)
+CGAL_SFE_NAMED_PARAMETER(edge_size)
 /// Mesh_3's smallest facet angle (degrees).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(facet_angle)
+CGAL_SFE_NAMED_PARAMETER(facet_angle)
 /// What to do when Mesh_3 is stuck (a `std::function<void(double)>`).
-CGAL_SFE_RECONSTRUCTION_PARAMETER(unresponsive_mesher_handler)
-
-#undef CGAL_SFE_RECONSTRUCTION_PARAMETER
+CGAL_SFE_NAMED_PARAMETER(unresponsive_mesher_handler)
 
 } // namespace parameters
 

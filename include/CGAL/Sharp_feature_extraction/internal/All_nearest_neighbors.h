@@ -8,6 +8,7 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/Spatial_grid.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,27 +28,6 @@ constexpr double neighborhood_cell_per_radius = 1.2;
 constexpr double neighborhood_guess_factor = 1.5;
 /// Below this many points, every query goes to the k-d tree.
 constexpr std::size_t smallest_gridded_set = 4096;
-
-/// Cell coordinates in a grid of side `cell` with its origin at `low`, offset by 1 (so that
-/// the cells around any cell have coordinates too), packed in one sortable key of 21 bits per
-/// coordinate. Coordinates beyond 21 bits wrap around.
-struct Grid_key
-{
-  static constexpr std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
-
-  static std::uint64_t pack(std::uint64_t x, std::uint64_t y, std::uint64_t z)
-  {
-    return ((x & mask) << 42) | ((y & mask) << 21) | (z & mask);
-  }
-  static std::uint64_t of(const Vec3& p, const Vec3& low, double cell)
-  {
-    const Vec3 g = (p - low) / cell;
-    return pack(std::uint64_t(g[0]) + 1, std::uint64_t(g[1]) + 1, std::uint64_t(g[2]) + 1);
-  }
-  static std::uint64_t x(std::uint64_t key) { return key >> 42; }
-  static std::uint64_t y(std::uint64_t key) { return (key >> 21) & mask; }
-  static std::uint64_t z(std::uint64_t key) { return key & mask; }
-};
 
 /// The points of a set sorted by the cubic cells of a grid (side `cell`, origin `low`): the
 /// cells in ascending key order, each with its points in ascending order.

@@ -1,7 +1,10 @@
 // Copyright (c) 2026 The Sharp_feature_extraction authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// A uniform hash grid over 3D points for fixed-radius queries.
+// The package's spatial grid: cubic cells keyed by `Grid_key`, the one packing of cell
+// coordinates. Two structures use it: `Spatial_grid` below (a hash of the cells, for
+// fixed-radius queries) and `Cell_grid` (All_nearest_neighbors.h: the cells of a fixed set in
+// key order, for the all-points neighbourhood sweeps of stages 1 and 2).
 //
 // The meshing helpers ask two kinds of questions many times: "which points lie within r of x"
 // (fits, curve repair) and "which curve sample is nearest to x, if any within r" (millions of
@@ -10,6 +13,8 @@
 
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_SPATIAL_GRID_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_SPATIAL_GRID_H
+
+#include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
 
 #include <array>
 #include <cmath>
@@ -22,6 +27,27 @@
 namespace CGAL {
 namespace Sharp_feature_extraction {
 namespace internal {
+
+/// Cell coordinates in a grid of side `cell` with its origin at `low`, offset by 1 (so that
+/// the cells around any cell have coordinates too), packed in one sortable key of 21 bits per
+/// coordinate. Coordinates beyond 21 bits wrap around.
+struct Grid_key
+{
+  static constexpr std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
+
+  static std::uint64_t pack(std::uint64_t x, std::uint64_t y, std::uint64_t z)
+  {
+    return ((x & mask) << 42) | ((y & mask) << 21) | (z & mask);
+  }
+  static std::uint64_t of(const Vec3& p, const Vec3& low, double cell)
+  {
+    const Vec3 g = (p - low) / cell;
+    return pack(std::uint64_t(g[0]) + 1, std::uint64_t(g[1]) + 1, std::uint64_t(g[2]) + 1);
+  }
+  static std::uint64_t x(std::uint64_t key) { return key >> 42; }
+  static std::uint64_t y(std::uint64_t key) { return (key >> 21) & mask; }
+  static std::uint64_t z(std::uint64_t key) { return key & mask; }
+};
 
 /// Points stored by index in cubic cells of side `cell_size`.
 template <typename Point_3>
@@ -92,12 +118,11 @@ private:
             static_cast<std::int64_t>(std::floor(p.z() / m_cell_size))};
   }
 
+  // Cells wrap around every 2^21 cells: points that far apart share keys and are then told
+  // apart by their distance, at the cost of a longer scan (never on a real model).
   static std::uint64_t key(const std::array<std::int64_t, 3>& c)
   {
-    // 21 bits per axis: cells are a few sampling spacings wide, so any real model fits.
-    const std::uint64_t mask = (std::uint64_t(1) << 21) - 1;
-    return ((std::uint64_t(c[0]) & mask) << 42) | ((std::uint64_t(c[1]) & mask) << 21) |
-           (std::uint64_t(c[2]) & mask);
+    return Grid_key::pack(std::uint64_t(c[0]), std::uint64_t(c[1]), std::uint64_t(c[2]));
   }
 
   double m_cell_size;

@@ -10,6 +10,7 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_contract.h>
 #include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
 #include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 
@@ -27,8 +28,9 @@ struct Completion_constants
 {
   /// Vertices used to estimate the tangent at an end.
   static constexpr std::size_t tangent_vertices = 6;
-  /// A curve turning by more than this angle (degrees) at a vertex is split there.
-  static constexpr double sharp_turn_angle = 60;
+  /// A curve turning by more than this angle (degrees) at a vertex is split there: the Mesh_3
+  /// contract's (Mesh_3 rounds such a turn off).
+  static constexpr double sharp_turn_angle = mesh_polylines::Mesh_polyline_contract::sharp_turn_angle;
   /// Laplacian step: the fraction of the way to the weighted average of the two neighbours.
   static constexpr double laplacian_step = 0.5;
   /// Second, inflating step of each pass (Taubin's lambda|mu smoothing, SIGGRAPH 1995): a
