@@ -20,6 +20,7 @@
 
 #include "bench_support.h"
 #include "memory_tracking.h"
+#include "patch_scoring.h"
 
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
 
@@ -112,6 +113,29 @@ void add_stage_memory(Json_line& line, const std::vector<Point>& cloud)
   measure("completion", [&] { CGAL::complete_feature_polylines(network); });
 }
 
+/// The surface patches of `cloud` bounded by `network`, scored against the true patches of
+/// the mesh (faces joined across edges no sharper than the ground truth's angle).
+void add_patch_fields(Json_line& line, const Command_line& options, const std::vector<Point>& cloud,
+                      const CGAL::Feature_curve_network<K>& network)
+{
+  const Stopwatch clock;
+  CGAL::Surface_patches<K> patches;
+  CGAL::segment_into_patches<CGAL::Parallel_if_available_tag>(cloud, network, patches);
+  line.add("time_patches", clock.seconds());
+  Indexed_mesh mesh = read_indexed_mesh(options.text("mesh"));
+  const double offset = options.number("offset");
+  for(Point& v : mesh.vertices)
+    v = Point(v.x() + offset, v.y() + offset, v.z() + offset);
+  const std::vector<std::size_t> truth =
+    true_patch_of_points(mesh, true_patch_of_faces(mesh, options.number("truth-angle")), cloud);
+  const Patch_scores scores = score_patches(truth, patches.labels, CGAL::Surface_patches<K>::unassigned);
+  line.add("patches_true", scores.true_patches)
+      .add("patches_ours", scores.our_patches)
+      .add("patches_mean_iou", scores.mean_iou)
+      .add("patches_ari", scores.adjusted_rand_index)
+      .add("patches_unassigned", scores.unassigned);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -123,6 +147,10 @@ int main(int argc, char** argv)
     defaults["save-curves"] = "";
     defaults["stage-memory"] = "0";
     defaults["threads"] = "0";
+    defaults["patches"] = "1";
+    // The dihedral angle of the ground truth's creases (sfe_ground_truth --angle): the true
+    // patches are the faces joined across the other edges.
+    defaults["truth-angle"] = "30";
     const Command_line options(argc, argv, defaults);
     if(options.text("mesh").empty() || options.text("truth").empty())
       throw std::invalid_argument("--mesh and --truth are required\n" + options.usage());
@@ -181,6 +209,8 @@ int main(int argc, char** argv)
       add_point_fields(line, "projected", evaluate_points(truth, points_of(result.projected), eps), has_truth);
       add_point_fields(line, "smoothed", evaluate_points(truth, points_of(result.smoothed), eps), has_truth);
 
+      if(options.number("patches") != 0)
+        add_patch_fields(line, options, cloud, result.network);
       if(!options.text("save-curves").empty())
         write_polylines(options.text("save-curves"), polylines_of(result.network));
       if(!options.text("picture").empty())

@@ -1,10 +1,11 @@
 // extract_sharp_features: point cloud in, sharp feature curves out.
 //
-//   extract_sharp_features INPUT -o OUT.polylines.txt [--ply OUT.ply] [overrides]
+//   extract_sharp_features INPUT -o OUT.polylines.txt [--ply OUT.ply] [--patches LABELS.txt] [overrides]
 //
 // Reads .xyz/.ply/.off points (normals ignored), runs the five stages with scales derived from the
 // data (or overridden), writes the curves in Mesh_3's polyline format and, optionally, a PLY with
-// the curve vertices, edges, both surface normals and corner flags. Prints a summary.
+// the curve vertices, edges, both surface normals and corner flags, and the surface patch of
+// every point. Prints a summary.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
@@ -19,6 +20,8 @@
 #endif
 
 #include <cstdlib>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -35,6 +38,8 @@ const char* usage =
   "  INPUT                     point cloud: .xyz, .ply or .off (only positions are used)\n"
   "  -o, --output FILE         curves in Mesh_3's polyline format (one per line: n x1 y1 z1 ...)\n"
   "  --ply FILE                also write curve vertices, edges, both normals and corner flags\n"
+  "  --patches FILE            also write the surface patch of every input point, one integer per\n"
+  "                            line in input order (-1: in no patch)\n"
   "  --threads N               number of threads (default: all cores)\n"
   "  --quiet                   no progress bar and no summary\n"
   "overrides (default: derived from the data, see the summary):\n"
@@ -63,11 +68,20 @@ double number(const std::string& option, const char* text)
   return v;
 }
 
+/// One line per point: its patch, or -1.
+bool write_patch_labels(const std::string& path, const CGAL::Surface_patches<K>& patches)
+{
+  std::ofstream out(path);
+  for(std::size_t label : patches.labels)
+    out << (label == CGAL::Surface_patches<K>::unassigned ? -1 : static_cast<long long>(label)) << '\n';
+  return bool(out);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  std::string input, output, ply;
+  std::string input, output, ply, patches_file;
   int threads = 0;
   bool quiet = false;
   double candidate_neighbors = 0, rmls_neighbors = 0, threshold = -1, tolerance = 0, sharpness = 25;
@@ -83,6 +97,7 @@ int main(int argc, char** argv)
     if(a == "-h" || a == "--help") { std::cout << usage; return 0; }
     else if(a == "-o" || a == "--output") output = value();
     else if(a == "--ply") ply = value();
+    else if(a == "--patches") patches_file = value();
     else if(a == "--threads") threads = int(number(a, value()));
     else if(a == "--quiet") quiet = true;
     else if(a == "--candidate-neighbors") candidate_neighbors = number(a, value());
@@ -118,6 +133,7 @@ int main(int argc, char** argv)
   if(!quiet)
     progress = sfe_utilities::Terminal_progress_bar("extracting sharp features");
   CGAL::Sharp_features<K> result;
+  CGAL::Surface_patches<K> patches;
   try
   {
     const auto np = sfe::candidate_neighbors(std::size_t(candidate_neighbors),
@@ -130,7 +146,15 @@ int main(int argc, char** argv)
                       .sharpness_angle(sharpness)
                       .number_of_iterations(unsigned(passes))
                       .callback(progress);
-    CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(points, result, np);
+    const CGAL::Sharp_feature_extraction_context<K> context(points, np);
+    context.extract_sharp_features(result);
+    if(!patches_file.empty())
+    {
+      std::function<bool(double)> patch_progress;
+      if(!quiet)
+        patch_progress = sfe_utilities::Terminal_progress_bar("segmenting into patches");
+      context.segment_into_patches(result.network, patches, CGAL::parameters::callback(patch_progress));
+    }
   }
   catch(const std::exception& e)
   {
@@ -144,6 +168,8 @@ int main(int argc, char** argv)
     fail("cannot write '" + output + "'");
   if(!ply.empty() && !CGAL::IO::write_PLY_feature_curves(ply, result.network))
     fail("cannot write '" + ply + "'");
+  if(!patches_file.empty() && !write_patch_labels(patches_file, patches))
+    fail("cannot write '" + patches_file + "'");
 
   if(!quiet)
   {
@@ -158,14 +184,17 @@ int main(int argc, char** argv)
               << "corner points     " << result.projected.corner_points.size() << "\n"
               << "curves            " << result.network.polylines.size() << " (" << loops << " closed loops)\n"
               << "corners           " << result.network.corners.size() << "\n"
+              << (patches_file.empty() ? "" : "patches           " + std::to_string(patches.patches.size()) + "\n")
               << "scales            spacing " << s.spacing << ", noise " << s.noise << ", neighbours "
               << s.candidate_neighbors << "/" << s.rmls_neighbors << ", threshold " << s.residual_threshold
               << ", RMLS tolerance " << s.rmls_tolerance << ", corner radius " << s.corner_radius
               << ", growth radius " << s.growth_radius << ", completion " << s.completion_distance << "\n"
-              << "time [s]          candidates " << t.candidates << ", projection " << t.projection
+              << "time [s]          context " << t.context << ", candidates " << t.candidates
+              << ", projection " << t.projection
               << ", smoothing " << t.smoothing << ", growing " << t.growing << ", completion " << t.completion
               << ", total " << t.total() << "\n"
-              << "wrote             " << output << (ply.empty() ? "" : " and " + ply) << std::endl;
+              << "wrote             " << output << (ply.empty() ? "" : ", " + ply)
+              << (patches_file.empty() ? "" : ", " + patches_file) << std::endl;
   }
   return 0;
 }

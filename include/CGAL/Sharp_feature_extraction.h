@@ -16,6 +16,7 @@
 #include <CGAL/Sharp_feature_extraction/smooth_feature_points.h>
 #include <CGAL/Sharp_feature_extraction/grow_feature_polylines.h>
 #include <CGAL/Sharp_feature_extraction/complete_feature_polylines.h>
+#include <CGAL/Sharp_feature_extraction/segment_into_patches.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
 #include <CGAL/Sharp_feature_extraction/IO/read_polylines.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>

@@ -13,6 +13,9 @@
 
 #include <algorithm>
 #include <iostream>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -401,6 +404,82 @@ TEST_CASE("the extraction context: its scales are estimate_sharp_feature_scales(
   const double radius = 2 * estimated.growth_radius;
   REQUIRE(CGAL::grow_feature_polylines(from_context.smoothed, grown, sfe_np::growth_radius(radius)));
   CHECK(grown.scales.growth_radius == radius);
+}
+
+/// The face of the unit cube nearest to `p`: 0..5 for x = 0, x = 1, y = 0, y = 1, z = 0, z = 1.
+int nearest_cube_face(const Vec& p)
+{
+  const double distance[6] = {p.x, 1 - p.x, p.y, 1 - p.y, p.z, 1 - p.z};
+  int face = 0;
+  for(int f = 1; f < 6; ++f)
+    if(std::abs(distance[f]) < std::abs(distance[face]))
+      face = f;
+  return face;
+}
+
+/// Share of the points whose patch is the one holding most of their true face's points, and
+/// the number of faces whose majority patches are distinct.
+std::pair<double, std::size_t> cube_patch_agreement(const std::vector<Vec>& points,
+                                                    const CGAL::Surface_patches<K>& patches)
+{
+  std::map<std::pair<int, std::size_t>, std::size_t> count;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    ++count[{nearest_cube_face(points[i]), patches.labels[i]}];
+  std::size_t agree = 0;
+  std::set<std::size_t> majority_patches;
+  for(int face = 0; face < 6; ++face)
+  {
+    std::size_t best = 0, patch = CGAL::Surface_patches<K>::unassigned;
+    for(const auto& [key, n] : count)
+      if(key.first == face && n > best)
+      {
+        best = n;
+        patch = key.second;
+      }
+    agree += best;
+    majority_patches.insert(patch);
+  }
+  return {double(agree) / double(points.size()), majority_patches.size()};
+}
+
+/// Patches, exact cube: each face is one patch (the points of the creases themselves are on
+/// two faces: a few may go either way).
+constexpr double minimum_patch_agreement_exact = 0.999;
+/// Patches, cube with 0.5% dB noise: points within the noise of a crease may go either way.
+constexpr double minimum_patch_agreement_noisy = 0.98;
+
+TEST_CASE("patches: the faces of a cube are its patches, adjacent along its 12 creases", "[stages][patches]")
+{
+  for(const double noise : {0., noisy})
+  {
+    const std::vector<Vec> samples = sample(unit_cube(), number_of_points, noise);
+    const std::vector<Point_3> points = to_points<Point_3>(samples);
+    const CGAL::Sharp_feature_extraction_context<K, CGAL::Parallel_if_available_tag> context(points);
+    CGAL::Sharp_features<K> features;
+    REQUIRE(context.extract_sharp_features(features));
+    CGAL::Surface_patches<K> patches;
+    REQUIRE(context.segment_into_patches(features.network, patches));
+    REQUIRE(patches.labels.size() == points.size());
+    const auto [agreement, distinct_faces] = cube_patch_agreement(samples, patches);
+    std::cout << "cube at noise " << noise << ", patches: " << patches.patches.size() << ", agreement "
+              << agreement << ", adjacencies " << patches.adjacencies.size() << std::endl;
+    CHECK(patches.patches.size() == 6);
+    CHECK(distinct_faces == 6);
+    CHECK(agreement >= (noise == 0 ? minimum_patch_agreement_exact : minimum_patch_agreement_noisy));
+    std::set<std::pair<std::size_t, std::size_t>> adjacent;
+    for(const CGAL::Patch_adjacency& a : patches.adjacencies)
+      adjacent.insert({a.first_patch, a.second_patch});
+    CHECK(adjacent.size() == 12);
+    for(const CGAL::Surface_patch<K>& patch : patches.patches)
+    {
+      CHECK(patch.plane_residual < 0.01);
+      CHECK(patch.bounding_polylines.size() >= 4);
+    }
+    // The free function gives the same labels.
+    CGAL::Surface_patches<K> again;
+    REQUIRE(CGAL::segment_into_patches<CGAL::Sequential_tag>(points, features.network, again));
+    CHECK(again.labels == patches.labels);
+  }
 }
 
 TEST_CASE("stage 5: completion bridges a gap cut out of a straight crease into one curve", "[stages][completion]")

@@ -13,6 +13,7 @@
 #include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
 #include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
 #include <CGAL/Sharp_feature_extraction/internal/completion_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/patches_impl.h>
 #include <CGAL/Sharp_feature_extraction/internal/polyline_growing_impl.h>
 #include <CGAL/Sharp_feature_extraction/internal/rmls_projection_impl.h>
 #include <CGAL/Sharp_feature_extraction/internal/smoothing_impl.h>
@@ -561,6 +562,36 @@ public:
                                      CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::callback_t>(),
                   "complete_feature_polylines: a parameter of another stage");
     sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np, m_completion_parameters));
+  }
+
+  /// The surface patches bounded by the curves of `network`: see `CGAL::segment_into_patches()`,
+  /// with the scales of `network.scales`.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{receives the progress in [0,1]; returning `false` stops the computation}
+  ///     \cgalParamType{`std::function<bool(double)>`}
+  ///     \cgalParamDefault{the one given to the constructor, if any}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  /// \returns `false` if the callback interrupted the computation (`patches` is then empty).
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  bool segment_into_patches(const Feature_curve_network<GeomTraits>& network, Surface_patches<GeomTraits>& patches,
+                            const NamedParameters& np = parameters::default_values()) const
+  {
+    namespace sfe = Sharp_feature_extraction::internal;
+    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+                  "segment_into_patches: a parameter of another stage");
+    sfe::Working_patches working;
+    patches = Surface_patches<GeomTraits>();
+    if(!sfe::segment_patches<ConcurrencyTag>(m_input, sfe::convert_network<sfe::Working_traits>(network),
+                                             sfe::Progress(sfe::read_callback(np, m_callback)), working))
+      return false;
+    patches = sfe::convert_patches<GeomTraits>(working);
+    return true;
   }
 
   /// The five stages: see `CGAL::extract_sharp_features()`.

@@ -157,6 +157,59 @@ struct Feature_curve_network
 };
 
 /// \ingroup PkgSharpFeatureExtractionRef
+/// A surface patch (paper, section 3.6): a region of the points that the feature curves
+/// enclose, with the surface fitted to it.
+template <typename GeomTraits>
+struct Surface_patch
+{
+  /// The number of distinct input points in the patch.
+  std::size_t number_of_points = 0;
+  /// The centroid of its points.
+  typename GeomTraits::Point_3 centroid;
+  /// Unit normal of the least-squares plane of its points (its orientation is arbitrary:
+  /// the points carry none).
+  typename GeomTraits::Vector_3 normal;
+  /// Root-mean-square distance from its points to that plane.
+  typename GeomTraits::FT plane_residual = 0;
+  /// Root-mean-square distance, along `normal`, from its points to the least-squares quadric
+  /// height field over that plane (large where the patch is not a height field, e.g. a
+  /// cylinder turning by more than half a turn).
+  typename GeomTraits::FT quadric_residual = 0;
+  /// Indices (into `Feature_curve_network::polylines`) of the curves along which it meets
+  /// another patch, ascending.
+  std::vector<std::size_t> bounding_polylines;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Two patches that meet along a curve: on its two sides.
+struct Patch_adjacency
+{
+  /// The patch on one side (the smaller index).
+  std::size_t first_patch = 0;
+  /// The patch on the other side.
+  std::size_t second_patch = 0;
+  /// Index of the curve in `Feature_curve_network::polylines`.
+  std::size_t polyline = 0;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Output of `segment_into_patches()`: a patch for every input point, and the patches.
+template <typename GeomTraits>
+struct Surface_patches
+{
+  /// Value of a label for a point in no patch (an outlier).
+  static constexpr std::size_t unassigned = (std::numeric_limits<std::size_t>::max)();
+
+  /// For every input point, in input order: the index of its patch in `patches`, or
+  /// `unassigned`. Copies of a point share its label.
+  std::vector<std::size_t> labels;
+  /// The patches, numbered in the spatial order of their first point.
+  std::vector<Surface_patch<GeomTraits>> patches;
+  /// The pairs of patches that meet along a curve, by curve, then by patches.
+  std::vector<Patch_adjacency> adjacencies;
+};
+
+/// \ingroup PkgSharpFeatureExtractionRef
 /// Wall-clock time of each stage, in seconds.
 struct Sharp_feature_timings
 {

@@ -15,6 +15,7 @@
 #include <CGAL/Sharp_feature_extraction/smooth_feature_points.h>
 #include <CGAL/Sharp_feature_extraction/grow_feature_polylines.h>
 #include <CGAL/Sharp_feature_extraction/complete_feature_polylines.h>
+#include <CGAL/Sharp_feature_extraction/segment_into_patches.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <type_traits>

@@ -49,6 +49,7 @@ typedef Feature_point_set<Working_traits> Working_feature_points;
 typedef Feature_polyline<Working_traits> Working_polyline;
 typedef Feature_corner<Working_traits> Working_corner;
 typedef Feature_curve_network<Working_traits> Working_network;
+typedef Surface_patches<Working_traits> Working_patches;
 
 /// Whether `curve` is a loop that passes through no corner: it has no ends at all. (A loop
 /// through a corner starts and ends there: completion treats its two ends like any others.)

@@ -113,6 +113,26 @@ Feature_curve_network<Target> convert_network(const Feature_curve_network<Source
   return out;
 }
 
+template <typename Target, typename Source>
+Surface_patches<Target> convert_patches(const Surface_patches<Source>& in)
+{
+  Surface_patches<Target> out;
+  out.labels = in.labels;
+  out.adjacencies = in.adjacencies;
+  for(const Surface_patch<Source>& patch : in.patches)
+  {
+    Surface_patch<Target> converted;
+    converted.number_of_points = patch.number_of_points;
+    converted.centroid = convert_point<Target>(patch.centroid);
+    converted.normal = convert_vector<Target>(patch.normal);
+    converted.plane_residual = typename Target::FT(CGAL::to_double(patch.plane_residual));
+    converted.quadric_residual = typename Target::FT(CGAL::to_double(patch.quadric_residual));
+    converted.bounding_polylines = patch.bounding_polylines;
+    out.patches.push_back(std::move(converted));
+  }
+  return out;
+}
+
 } // namespace internal
 } // namespace Sharp_feature_extraction
 } // namespace CGAL

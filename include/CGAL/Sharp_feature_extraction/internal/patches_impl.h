@@ -1,0 +1,445 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Surface patches (paper 3.6): the points split into the regions that the feature curves
+// enclose. Regions grow over the points outside the crease bands; the points of a band join
+// the region on their side of the crease.
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
+
+#include <CGAL/Sharp_feature_extraction/internal/All_nearest_neighbors.h>
+#include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
+#include <CGAL/Sharp_feature_extraction/internal/Height_field_fit.h>
+#include <CGAL/Sharp_feature_extraction/internal/Indexed_input.h>
+#include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
+#include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Sharp_feature_extraction {
+namespace internal {
+
+struct Patch_constants
+{
+  /// Each point links to this many nearest points (the neighbours that define the spacing).
+  static constexpr std::size_t linked_neighbors = 6;
+  /// Links longer than this many spacings are not surface: they reach outliers.
+  static constexpr double longest_link = 3;
+  /// A point of a crease band takes the region of the nearest point outside the bands on its
+  /// side, among this many nearest outside the bands (those on the other side are about as
+  /// near: a few times the number of linked neighbours).
+  static constexpr std::size_t band_candidates = 32;
+  /// Regions with fewer points than a stage-2 neighbourhood are not faces (the forward search
+  /// could not have found them as surfaces): they merge into the neighbour they share most
+  /// links with.
+  static constexpr double smallest_patch_per_rmls_neighbors = 1;
+};
+
+/// Union-find over point positions; the root of a set is its smallest element, so that the
+/// partition and its representatives do not depend on the order of the unions.
+class Disjoint_sets
+{
+public:
+  explicit Disjoint_sets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::size_t(0)); }
+
+  std::size_t find(std::size_t i)
+  {
+    while(m_parent[i] != i)
+    {
+      m_parent[i] = m_parent[m_parent[i]];
+      i = m_parent[i];
+    }
+    return i;
+  }
+
+  void unite(std::size_t a, std::size_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if(a != b)
+      m_parent[(std::max)(a, b)] = (std::min)(a, b);
+  }
+
+private:
+  std::vector<std::size_t> m_parent;
+};
+
+/// Where a point lies relative to the curves: the nearest crease landmark within the crease
+/// band (`no_index` outside it: see `Crease_landmarks`), and the surface there that it lies on.
+struct Crease_side
+{
+  std::size_t landmark = no_index;
+  std::size_t side = 0;
+};
+
+/// The places that tell the sides of the creases: every curve vertex, with the normals of its
+/// two surfaces, and every corner, with the normals of all the surfaces that meet there (its
+/// own and those of the ends of its curves, nearly parallel ones counted once). A point near a
+/// corner is located by the corner: the normals of one curve there do not include the third
+/// surface of the corner.
+class Crease_landmarks
+{
+public:
+  explicit Crease_landmarks(const Working_network& network)
+  {
+    std::vector<std::vector<Vec3>> corner_normals(network.corners.size());
+    for(std::size_t k = 0; k < network.corners.size(); ++k)
+      for(const Vec3& n : network.corners[k].normals)
+        add_distinct(corner_normals[k], n);
+    for(std::size_t c = 0; c < network.polylines.size(); ++c)
+    {
+      const Working_polyline& curve = network.polylines[c];
+      for(std::size_t v = 0; v < curve.points.size(); ++v)
+      {
+        m_vertex_points.push_back(curve.points[v]);
+        m_normals.push_back({curve.normals[v][0], curve.normals[v][1]});
+        m_curve.push_back(c);
+      }
+      for(const auto& [corner, v] : {std::make_pair(curve.front_corner, std::size_t(0)),
+                                     std::make_pair(curve.back_corner, curve.points.size() - 1)})
+        if(corner != no_index)
+          for(const Vec3& n : curve.normals[v])
+            add_distinct(corner_normals[corner], n);
+    }
+    m_vertex_index.build<CGAL::Sequential_tag>(m_vertex_points);
+    m_first_corner = m_normals.size();
+    for(std::size_t k = 0; k < network.corners.size(); ++k)
+    {
+      m_corner_points.push_back(network.corners[k].point);
+      m_normals.push_back(corner_normals[k]);
+      m_curve.push_back(no_index);
+    }
+    m_corner_index.build<CGAL::Sequential_tag>(m_corner_points);
+  }
+
+  /// The surface, among those of `landmark`, that passes closest to `x`.
+  std::size_t side(std::size_t landmark, const Vec3& x) const
+  {
+    const Vec3 d = x - point(landmark);
+    const std::vector<Vec3>& normals = m_normals[landmark];
+    std::size_t closest = 0;
+    for(std::size_t k = 1; k < normals.size(); ++k)
+      if(std::abs(normals[k].dot(d)) < std::abs(normals[closest].dot(d)))
+        closest = k;
+    return closest;
+  }
+
+  /// Where `x` lies: by the nearest corner within `band`, else by the nearest curve vertex
+  /// within `band`.
+  Crease_side locate(const Vec3& x, double band, std::vector<std::size_t>& scratch) const
+  {
+    Crease_side where;
+    m_corner_index.nearest(x, 1, scratch);
+    if(!scratch.empty() && (m_corner_points[scratch.front()] - x).norm() <= band)
+      where.landmark = m_first_corner + scratch.front();
+    else
+    {
+      m_vertex_index.nearest(x, 1, scratch);
+      if(!scratch.empty() && (m_vertex_points[scratch.front()] - x).norm() <= band)
+        where.landmark = scratch.front();
+    }
+    if(where.landmark != no_index)
+      where.side = side(where.landmark, x);
+    return where;
+  }
+
+  /// The curve of a landmark that is a curve vertex (`no_index` for a corner).
+  std::size_t curve(std::size_t landmark) const { return m_curve[landmark]; }
+
+private:
+  std::vector<Vec3> m_vertex_points, m_corner_points;
+  std::vector<std::vector<Vec3>> m_normals;
+  std::vector<std::size_t> m_curve;
+  std::size_t m_first_corner = 0;
+  Point_index m_vertex_index, m_corner_index;
+
+  const Vec3& point(std::size_t landmark) const
+  {
+    return landmark < m_first_corner ? m_vertex_points[landmark] : m_corner_points[landmark - m_first_corner];
+  }
+
+  static void add_distinct(std::vector<Vec3>& normals, const Vec3& n)
+  {
+    const double cos_same = std::cos(radians(same_crease_normal_angle));
+    for(const Vec3& m : normals)
+      if(m.dot(n) > cos_same)
+        return;
+    normals.push_back(n);
+  }
+};
+
+/// The patches of the distinct points (positions in `Indexed_input::points`), before they are
+/// given to the user: a label per point (`no_index`: unassigned), and the sides of the curves.
+struct Patch_labels
+{
+  std::vector<std::size_t> label;
+  std::vector<Crease_side> where;
+  std::size_t number_of_patches = 0;
+};
+
+/// The regions of the points outside the crease bands: a point links to its
+/// `linked_neighbors` nearest within `longest_link` spacings, and the regions are the
+/// connected sets of points outside the bands. A band is wider than a link, so no link between
+/// two points outside the bands crosses a crease. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
+                  Progress progress, Patch_labels& labels, std::vector<std::vector<std::size_t>>& links)
+{
+  typedef Patch_constants Constants;
+  const std::vector<Vec3>& points = input.points;
+  const std::size_t n = points.size();
+  labels.where.assign(n, Crease_side());
+  links.assign(n, {});
+  const double band = scales.growth_radius;
+  const double longest = Constants::longest_link * scales.spacing;
+  if(!parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> scratch;
+       for(std::size_t i = first; i < last; ++i)
+       {
+         labels.where[i] = landmarks.locate(points[i], band, scratch);
+         input.index.nearest(points[i], Constants::linked_neighbors + 1, scratch);
+         for(std::size_t j : scratch)
+           if(j != i && (points[j] - points[i]).norm() <= longest)
+             links[i].push_back(j);
+       }
+     }))
+    return false;
+  auto outside_bands = [&](std::size_t i) { return labels.where[i].landmark == no_index; };
+  Disjoint_sets sets(n);
+  for(std::size_t i = 0; i < n; ++i)
+    if(outside_bands(i))
+      for(std::size_t j : links[i])
+        if(outside_bands(j))
+          sets.unite(i, j);
+  labels.label.assign(n, no_index);
+  for(std::size_t i = 0; i < n; ++i)
+    if(outside_bands(i))
+      labels.label[i] = sets.find(i);
+  return true;
+}
+
+/// Gives every point of a crease band the region of the nearest point outside the bands that
+/// lies on its side of the crease (among the `band_candidates` nearest outside the bands; a
+/// point outside the bands is far enough from the crease for its side to be clear, while a
+/// point in the band, within the noise of the crease, may lie on either). Points with no such
+/// neighbour keep no region. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks& landmarks, Progress progress,
+                        Patch_labels& labels)
+{
+  std::vector<std::size_t> outside;
+  std::vector<Vec3> outside_points;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(labels.where[i].landmark == no_index)
+    {
+      outside.push_back(i);
+      outside_points.push_back(points[i]);
+    }
+  Point_index index;
+  index.build<ConcurrencyTag>(outside_points);
+  std::vector<std::size_t> assigned(points.size(), no_index);
+  if(!parallel_blocks<ConcurrencyTag>(points.size(), progress, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> nearest;
+       for(std::size_t i = first; i < last; ++i)
+       {
+         const Crease_side& where = labels.where[i];
+         if(where.landmark == no_index)
+           continue;
+         index.nearest(points[i], Patch_constants::band_candidates, nearest);
+         for(std::size_t k : nearest)
+           if(landmarks.side(where.landmark, outside_points[k]) == where.side)
+           {
+             assigned[i] = labels.label[outside[k]];
+             break;
+           }
+       }
+     }))
+    return false;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(labels.where[i].landmark != no_index)
+      labels.label[i] = assigned[i];
+  return true;
+}
+
+/// Merges the regions smaller than `smallest` points into the region they share most links
+/// with (crossing links included: a sliver of band on the wrong side of its curve joins the
+/// face around it), smallest first; regions left small without any link are unassigned
+/// (outliers). Then numbers the regions 0, 1, ... by their smallest point.
+inline void merge_small_regions(const std::vector<std::vector<std::size_t>>& links, std::size_t smallest,
+                                Patch_labels& labels)
+{
+  const std::size_t n = labels.label.size();
+  Disjoint_sets sets(n);
+  for(std::size_t i = 0; i < n; ++i)
+    if(labels.label[i] != no_index)
+      sets.unite(i, labels.label[i]);
+  for(bool merged = true; merged;)
+  {
+    merged = false;
+    std::vector<std::size_t> size(n, 0);
+    for(std::size_t i = 0; i < n; ++i)
+      ++size[sets.find(i)];
+    std::vector<std::size_t> small;
+    for(std::size_t r = 0; r < n; ++r)
+      if(size[r] > 0 && size[r] < smallest)
+        small.push_back(r);
+    std::stable_sort(small.begin(), small.end(), [&](std::size_t a, std::size_t b) { return size[a] < size[b]; });
+    // Links from every small region to the others, counted.
+    std::map<std::size_t, std::map<std::size_t, std::size_t>> shared;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t r = sets.find(i);
+      if(size[r] >= smallest)
+        continue;
+      for(std::size_t j : links[i])
+        if(sets.find(j) != r)
+          ++shared[r][sets.find(j)];
+    }
+    for(std::size_t r : small)
+    {
+      const auto it = shared.find(r);
+      if(it == shared.end())
+        continue;
+      std::size_t best = no_index, most = 0;
+      for(const auto& [other, count] : it->second)
+        if(count > most)
+        {
+          best = other;
+          most = count;
+        }
+      sets.unite(r, best);
+      merged = true;
+      break; // sizes and links changed: recount
+    }
+  }
+  std::vector<std::size_t> size(n, 0), number(n, no_index);
+  for(std::size_t i = 0; i < n; ++i)
+    ++size[sets.find(i)];
+  labels.number_of_patches = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t r = sets.find(i);
+    if(size[r] < smallest)
+    {
+      labels.label[i] = no_index;
+      continue;
+    }
+    if(number[r] == no_index)
+      number[r] = labels.number_of_patches++;
+    labels.label[i] = number[r];
+  }
+}
+
+/// The pairs of patches on the two sides of each curve: on each side, the patch holding most
+/// of the band points of that side.
+inline std::vector<Patch_adjacency> find_adjacencies(const Crease_landmarks& landmarks, const Patch_labels& labels,
+                                                     std::size_t number_of_curves)
+{
+  // votes[curve][side]: patch -> band points
+  std::vector<std::array<std::map<std::size_t, std::size_t>, 2>> votes(number_of_curves);
+  for(std::size_t i = 0; i < labels.label.size(); ++i)
+  {
+    const Crease_side& where = labels.where[i];
+    if(where.landmark != no_index && landmarks.curve(where.landmark) != no_index && labels.label[i] != no_index)
+      ++votes[landmarks.curve(where.landmark)][where.side][labels.label[i]];
+  }
+  auto majority = [](const std::map<std::size_t, std::size_t>& count) {
+    std::size_t best = no_index, most = 0;
+    for(const auto& [patch, n] : count)
+      if(n > most)
+      {
+        best = patch;
+        most = n;
+      }
+    return best;
+  };
+  std::vector<Patch_adjacency> adjacencies;
+  for(std::size_t c = 0; c < number_of_curves; ++c)
+  {
+    const std::size_t a = majority(votes[c][0]), b = majority(votes[c][1]);
+    if(a != no_index && b != no_index && a != b)
+      adjacencies.push_back(Patch_adjacency{(std::min)(a, b), (std::max)(a, b), c});
+  }
+  return adjacencies;
+}
+
+/// The plane and quadric fitted to the points of each patch.
+inline std::vector<Surface_patch<Working_traits>> fit_patches(const std::vector<Vec3>& points, const Patch_labels& labels)
+{
+  std::vector<std::vector<std::size_t>> members(labels.number_of_patches);
+  for(std::size_t i = 0; i < labels.label.size(); ++i)
+    if(labels.label[i] != no_index)
+      members[labels.label[i]].push_back(i);
+  std::vector<Surface_patch<Working_traits>> patches(labels.number_of_patches);
+  for(std::size_t k = 0; k < patches.size(); ++k)
+  {
+    Surface_patch<Working_traits>& patch = patches[k];
+    patch.number_of_points = members[k].size();
+    Local_frame frame;
+    Vec3 variances;
+    if(!principal_frame(points, members[k], frame, variances))
+    {
+      patch.centroid = points[members[k].front()];
+      patch.normal = Vec3::UnitZ();
+      continue;
+    }
+    patch.centroid = frame.origin;
+    patch.normal = frame.n;
+    patch.plane_residual = std::sqrt(variances[0]);
+    Height_field quadric;
+    if(quadric.fit(points, members[k], frame, 2))
+    {
+      double sum = 0;
+      for(std::size_t i : members[k])
+        sum += quadric.height(points[i]) * quadric.height(points[i]);
+      patch.quadric_residual = std::sqrt(sum / double(members[k].size()));
+    }
+  }
+  return patches;
+}
+
+/// The patches of `input` bounded by the curves of `network` (see `segment_into_patches()`),
+/// with labels in input order. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool segment_patches(const Indexed_input& input, const Working_network& network, Progress progress,
+                     Working_patches& out)
+{
+  out = Working_patches();
+  out.labels.assign(input.input_size(), Working_patches::unassigned);
+  const Scales& scales = network.scales;
+  if(input.points.empty() || !(scales.spacing > 0))
+    return progress.report(1.);
+  const Crease_landmarks landmarks(network);
+  Patch_labels labels;
+  std::vector<std::vector<std::size_t>> links;
+  if(!grow_regions<ConcurrencyTag>(input, landmarks, scales, progress.sub(0, 0.6), labels, links)
+     || !assign_band_points<ConcurrencyTag>(input.points, landmarks, progress.sub(0.6, 0.9), labels))
+    return false;
+  const std::size_t smallest =
+    std::size_t(Patch_constants::smallest_patch_per_rmls_neighbors * double(scales.rmls_neighbors));
+  merge_small_regions(links, (std::max<std::size_t>)(1, smallest), labels);
+  out.patches = fit_patches(input.points, labels);
+  out.adjacencies = find_adjacencies(landmarks, labels, network.polylines.size());
+  for(const Patch_adjacency& adjacency : out.adjacencies)
+    for(std::size_t patch : {adjacency.first_patch, adjacency.second_patch})
+      out.patches[patch].bounding_polylines.push_back(adjacency.polyline);
+  for(std::size_t j = 0; j < input.input_size(); ++j)
+    out.labels[j] = labels.label[input.position_of_input[j]];
+  return progress.report(1.);
+}
+
+} // namespace internal
+} // namespace Sharp_feature_extraction
+} // namespace CGAL
+
+#endif

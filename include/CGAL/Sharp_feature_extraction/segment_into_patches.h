@@ -1,0 +1,77 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_SEGMENT_INTO_PATCHES_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_SEGMENT_INTO_PATCHES_H
+
+#include <CGAL/Sharp_feature_extraction/Sharp_feature_extraction_context.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+
+/// \ingroup PkgSharpFeatureExtractionRef
+/// Splits the points into the surface patches that the feature curves enclose (paper,
+/// section 3.6), and fits a plane and a quadric to each.
+///
+/// A point within the growth radius of a curve vertex or corner lies in the band of that
+/// crease. The points outside the bands link to their 6 nearest (within 3 spacings: longer links
+/// reach outliers), and the regions are the connected sets of those links; a band is wider than
+/// a link, so no region crosses a curve, and a crease that fades out does not split a face (the
+/// regions join around its end). A point of a band then takes the region of the nearest point
+/// outside the bands that lies on its side of the crease: on the surface, of those whose
+/// normals the vertex (or corner) carries, that passes closest to it. Regions smaller than a
+/// stage-2 neighbourhood (`Sharp_feature_scales::rmls_neighbors`) merge into the region they
+/// share most links with; those without links (outliers) stay unassigned. Two patches are
+/// adjacent along a curve when each holds most of the band points of one of its sides.
+///
+/// The result depends on the points and the curves only: the same whatever the number of
+/// threads.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`.
+/// \tparam PointRange a model of `ConstRange` whose value type is the key of `point_map`.
+///
+/// \param points the input points (the same range as given to the extraction).
+/// \param network the curves that bound the patches, with the scales they were computed with
+///   (`network.scales`): the output of `extract_sharp_features()` or
+///   `complete_feature_polylines()`, or curves of the user's with scales.
+/// \param patches receives a label for every input point, the patches and their adjacencies.
+/// \param np optional named parameters among the ones listed below; a parameter of another
+///   stage does not compile.
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `SharpFeatureExtractionTraits`}
+///     \cgalParamDefault{the kernel of the point type of `point_map`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{receives the progress in [0,1]; returning `false` stops the computation}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns `false` if the callback interrupted the computation (`patches` is then empty).
+/// \throws std::invalid_argument if a coordinate is not finite.
+template <typename ConcurrencyTag, typename PointRange, typename GeomTraits,
+          typename NamedParameters = parameters::Default_named_parameters>
+bool segment_into_patches(const PointRange& points, const Feature_curve_network<GeomTraits>& network,
+                          Surface_patches<GeomTraits>& patches,
+                          const NamedParameters& np = parameters::default_values())
+{
+  namespace sfe = Sharp_feature_extraction::internal;
+  static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                                   CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                                   CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                                   CGAL::internal_np::number_of_relaxation_steps_t>(),
+                "segment_into_patches: a parameter of another stage");
+  const Sharp_feature_extraction_context<GeomTraits, ConcurrencyTag> context(points, network.scales, np);
+  return context.segment_into_patches(network, patches);
+}
+
+} // namespace CGAL
+
+#endif
