@@ -48,6 +48,8 @@ typedef py::array_t<double, py::array::c_style | py::array::forcecast> Point_arr
 namespace sfe_internal = CGAL::Sharp_feature_extraction::internal;
 
 constexpr py::ssize_t dimension = 3;
+/// A feature curve lies where two smooth surfaces meet: each vertex has a normal of each.
+constexpr py::ssize_t surfaces_along_a_curve = 2;
 
 // ---------------------------------------------------------------------------------------------
 // Input
@@ -227,13 +229,15 @@ public:
     return !m_cancelled && !m_error;
   }
 
-  /// After a stopped run, with the GIL held: raises the exception of the progress function or
-  /// of the signal (KeyboardInterrupt for Ctrl-C), otherwise `Cancelled`.
-  [[noreturn]] void raise_stop() const
+  /// After the run, with the GIL held: raises the exception of the progress function or of a
+  /// signal (KeyboardInterrupt for Ctrl-C), even if the library finished regardless (stage 5 is
+  /// not interrupted), otherwise `Cancelled` if the run did not finish.
+  void raise_if_stopped(bool finished) const
   {
     if(m_error)
       throw *m_error;
-    throw Cancelled();
+    if(!finished)
+      throw Cancelled();
   }
 
 private:
@@ -271,7 +275,7 @@ bool run_extraction(const Point_array& points, const Extraction_parameters& p,
 class Thread_limit
 {
 public:
-  explicit Thread_limit(std::size_t threads)
+  explicit Thread_limit([[maybe_unused]] std::size_t threads)
   {
 #ifdef CGAL_LINKED_WITH_TBB
     if(threads > 0)
@@ -300,15 +304,9 @@ struct Result
   py::dict timings;
 };
 
-/// A new C-contiguous float64 array of the given shape.
-py::array_t<double> new_array(const std::vector<py::ssize_t>& shape)
-{
-  return py::array_t<double>(shape);
-}
-
 py::array_t<double> points_array(const std::vector<Kernel::Point_3>& points)
 {
-  py::array_t<double> array = new_array({py::ssize_t(points.size()), dimension});
+  py::array_t<double> array({py::ssize_t(points.size()), dimension});
   double* out = array.mutable_data();
   for(const Kernel::Point_3& p : points)
     for(int c = 0; c < dimension; ++c)
@@ -318,7 +316,7 @@ py::array_t<double> points_array(const std::vector<Kernel::Point_3>& points)
 
 py::array_t<double> normals_array(const std::vector<std::array<Kernel::Vector_3, 2>>& normals)
 {
-  py::array_t<double> array = new_array({py::ssize_t(normals.size()), 2, dimension});
+  py::array_t<double> array({py::ssize_t(normals.size()), surfaces_along_a_curve, dimension});
   double* out = array.mutable_data();
   for(const auto& pair : normals)
     for(const Kernel::Vector_3& n : pair)
@@ -418,8 +416,7 @@ Result extract(const py::object& points_object, const py::object& threads, py::o
     const Thread_limit limit(thread_count);
     finished = run_extraction(points, parameters, std::ref(relay), features);
   }
-  if(!finished)
-    relay.raise_stop();
+  relay.raise_if_stopped(finished);
   return make_result(std::move(features));
 }
 

@@ -87,35 +87,49 @@ Cancelled
 
 constexpr const char* result = R"doc(The sharp feature curves of a point cloud, as extract() returns them.
 
-The arrays are float64 and belong to the result; curves meeting at a corner share its exact
-point, and a closed curve repeats its first point at the end.)doc";
+The coordinates are float64 arrays that belong to the result; curves meeting at a corner share
+its exact point, and a closed curve repeats its first point at the end.)doc";
 
-constexpr const char* polylines = R"doc(The curves: a list of (n, 3) arrays, one per curve, the vertices in order.)doc";
+constexpr const char* polylines = R"doc(The curves.
 
-constexpr const char* normals = R"doc(The normals of the two surfaces meeting along each curve: a list of (n, 2, 3)
-arrays, normals[i][j] the two unit normals at polylines[i][j], each oriented away from the other
-surface, in the same order along the whole curve.)doc";
+A list of (n, 3) arrays, one per curve, the vertices in order along it.)doc";
 
-constexpr const char* corners = R"doc(The corners where curves end: an (m, 3) array of points.)doc";
+constexpr const char* normals = R"doc(The normals of the two surfaces meeting along each curve.
 
-constexpr const char* corner_polylines = R"doc(For each corner, the indices (into polylines) of the curves that start or end
-there: a list of m integer arrays.)doc";
+A list of (n, 2, 3) arrays: normals[i][j] holds the two unit normals at polylines[i][j], each
+oriented away from the other surface, in the same order along the whole curve.)doc";
 
-constexpr const char* scales = R"doc(The scales the extraction used (derived from the data or given), by name:
-spacing, noise, candidate_neighbors, candidate_radius, rmls_neighbors, residual_threshold,
-rmls_tolerance, corner_radius, growth_radius, completion_distance.)doc";
+constexpr const char* corners = R"doc(The corners where curves end.
 
-constexpr const char* timings = R"doc(Wall-clock seconds of each step, by name: context (reading the points and
-estimating the scales), candidates, projection, smoothing, growing, completion, and total.)doc";
+An (m, 3) array of points; corner_polylines gives the curves incident to each.)doc";
 
-constexpr const char* write_polylines = R"doc(Writes the curves to the file path (str or os.PathLike) in Mesh_3's polyline
-format: one curve per line, "n x1 y1 z1 ... xn yn zn", with every double written exactly. The file
-is the one the extract_sharp_features program writes with -o. Raises OSError if it cannot be
-written.)doc";
+constexpr const char* corner_polylines = R"doc(The curves incident to each corner.
 
-constexpr const char* write_ply = R"doc(Writes the curves to the file path (str or os.PathLike) as an ASCII PLY: the
-curve vertices with both normals, a corner flag and a curve index, and one edge per segment (what
-the extract_sharp_features program writes with --ply). Raises OSError if it cannot be written.)doc";
+A list of m integer arrays: corner_polylines[k] holds the indices (into polylines) of the curves
+that start or end at corners[k].)doc";
+
+constexpr const char* scales = R"doc(The scales the extraction used, derived from the data or given.
+
+A dict with the fields of CGAL::Sharp_feature_scales: spacing, noise, candidate_neighbors,
+candidate_radius, rmls_neighbors, residual_threshold, rmls_tolerance, corner_radius,
+growth_radius, completion_distance.)doc";
+
+constexpr const char* timings = R"doc(Wall-clock seconds of each step.
+
+A dict: context (reading the points and estimating the scales), candidates, projection,
+smoothing, growing, completion, and total.)doc";
+
+constexpr const char* write_polylines = R"doc(Writes the curves in Mesh_3's polyline format.
+
+One curve per line, "n x1 y1 z1 ... xn yn zn", every double written so that it reads back
+exactly: the file the extract_sharp_features program writes with -o. path is a str or an
+os.PathLike; raises OSError if the file cannot be written.)doc";
+
+constexpr const char* write_ply = R"doc(Writes the curves as an ASCII PLY.
+
+The curve vertices with both normals, a corner flag and a curve index, and one edge per
+segment: the file the extract_sharp_features program writes with --ply. path is a str or an
+os.PathLike; raises OSError if the file cannot be written.)doc";
 
 } // namespace docstrings
 
