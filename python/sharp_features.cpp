@@ -443,7 +443,7 @@ PYBIND11_MODULE(sharp_features, m)
     .def_readonly("timings", &Result::timings, docstrings::timings)
     .def("write_polylines", &write_polylines, py::arg("path"), docstrings::write_polylines)
     .def("write_ply", &write_ply, py::arg("path"), docstrings::write_ply)
-    .def("__repr__", &result_repr);
+    .def("__repr__", &result_repr, docstrings::result_repr);
 
   m.def("extract", &extract, py::arg("points"), py::kw_only(), py::arg("threads") = py::none(),
         py::arg("progress") = py::none(), docstrings::extract);

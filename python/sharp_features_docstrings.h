@@ -119,6 +119,8 @@ constexpr const char* timings = R"doc(Wall-clock seconds of each step.
 A dict: context (reading the points and estimating the scales), candidates, projection,
 smoothing, growing, completion, and total.)doc";
 
+constexpr const char* result_repr = R"doc(A one-line summary: the numbers of curves and corners.)doc";
+
 constexpr const char* write_polylines = R"doc(Writes the curves in Mesh_3's polyline format.
 
 One curve per line, "n x1 y1 z1 ... xn yn zn", every double written so that it reads back
