@@ -3,6 +3,7 @@
 import os
 import signal
 import threading
+import tracemalloc
 
 import numpy as np
 import pytest
@@ -42,6 +43,29 @@ def test_float32_and_non_contiguous_arrays_give_the_curves_of_the_float64_array(
     assert same_curves(sharp_features.extract(strided), cube_result)
     single = cube.astype(np.float32)
     assert same_curves(sharp_features.extract(single), sharp_features.extract(single.astype(np.float64)))
+
+
+# Enough points that a copy of the array outweighs the arrays of the result.
+COPY_CHECK_POINTS = 50_000
+
+
+def numpy_memory_peak(function, *args):
+    """The peak of the memory allocated by NumPy (which tracemalloc follows) while
+    `function(*args)` runs; the library's own allocations are not counted."""
+    tracemalloc.start()
+    try:
+        base = tracemalloc.get_traced_memory()[0]
+        function(*args)
+        return tracemalloc.get_traced_memory()[1] - base
+    finally:
+        tracemalloc.stop()
+
+
+def test_a_c_contiguous_float64_array_is_read_in_place_and_others_are_converted_once():
+    points = sample_cube_surface(COPY_CHECK_POINTS, seed=3)
+    assert numpy_memory_peak(sharp_features.extract, points) < points.nbytes / 4
+    fortran_order = np.asfortranarray(points)
+    assert points.nbytes <= numpy_memory_peak(sharp_features.extract, fortran_order) < 2 * points.nbytes
 
 
 def test_a_list_of_triples_is_an_array(cube, cube_result):
