@@ -47,6 +47,7 @@ typedef CGAL::Sharp_features<Kernel> Features;
 typedef py::array_t<double, py::array::c_style | py::array::forcecast> Point_array;
 namespace sfe_internal = CGAL::Sharp_feature_extraction::internal;
 
+/// Coordinates of a point: the columns of the input array.
 constexpr py::ssize_t dimension = 3;
 /// A feature curve lies where two smooth surfaces meet: each vertex has a normal of each.
 constexpr py::ssize_t surfaces_along_a_curve = 2;
@@ -293,8 +294,10 @@ private:
 // Output
 
 /// What `extract()` returns: the curves as NumPy arrays, and the curve network for the writers.
+/// The Python attributes are documented in sharp_features_docstrings.h.
 struct Result
 {
+  /// The library's curves and corners, which the writers take.
   CGAL::Feature_curve_network<Kernel> network;
   py::list polylines;
   py::list normals;
@@ -304,6 +307,7 @@ struct Result
   py::dict timings;
 };
 
+/// The points as an (n, 3) array.
 py::array_t<double> points_array(const std::vector<Kernel::Point_3>& points)
 {
   py::array_t<double> array({py::ssize_t(points.size()), dimension});
@@ -314,6 +318,7 @@ py::array_t<double> points_array(const std::vector<Kernel::Point_3>& points)
   return array;
 }
 
+/// The pairs of normals of a curve as an (n, 2, 3) array.
 py::array_t<double> normals_array(const std::vector<std::array<Kernel::Vector_3, 2>>& normals)
 {
   py::array_t<double> array({py::ssize_t(normals.size()), surfaces_along_a_curve, dimension});
@@ -325,6 +330,7 @@ py::array_t<double> normals_array(const std::vector<std::array<Kernel::Vector_3,
   return array;
 }
 
+/// The fields of `Sharp_feature_scales`, by name.
 py::dict scales_dict(const CGAL::Sharp_feature_scales<double>& s)
 {
   py::dict d;
@@ -341,6 +347,7 @@ py::dict scales_dict(const CGAL::Sharp_feature_scales<double>& s)
   return d;
 }
 
+/// The fields of `Sharp_feature_timings`, by name, and their total.
 py::dict timings_dict(const CGAL::Sharp_feature_timings& t)
 {
   py::dict d;
@@ -354,6 +361,7 @@ py::dict timings_dict(const CGAL::Sharp_feature_timings& t)
   return d;
 }
 
+/// Converts the final curve network of `features` for Python (with the GIL held).
 Result make_result(Features&& features)
 {
   Result r;
@@ -376,12 +384,14 @@ Result make_result(Features&& features)
   return r;
 }
 
+/// Raises OSError with `message`.
 [[noreturn]] void raise_os_error(const std::string& message)
 {
   PyErr_SetString(PyExc_OSError, message.c_str());
   throw py::error_already_set();
 }
 
+/// `Result.write_polylines()`: the library's writer, as the extract_sharp_features program calls it.
 void write_polylines(const Result& result, const std::filesystem::path& path)
 {
   std::vector<std::vector<Kernel::Point_3>> polylines;
@@ -391,6 +401,7 @@ void write_polylines(const Result& result, const std::filesystem::path& path)
     raise_os_error("cannot write '" + path.string() + "'");
 }
 
+/// `Result.write_ply()`: the library's writer, as the extract_sharp_features program calls it.
 void write_ply(const Result& result, const std::filesystem::path& path)
 {
   if(!CGAL::IO::write_PLY_feature_curves(path.string(), result.network))
@@ -400,6 +411,8 @@ void write_ply(const Result& result, const std::filesystem::path& path)
 // ---------------------------------------------------------------------------------------------
 // The module
 
+/// `sharp_features.extract()` (see its docstring): reads and checks the arguments with the GIL,
+/// computes without it, converts the result with it.
 Result extract(const py::object& points_object, const py::object& threads, py::object progress,
                const py::kwargs& keywords)
 {
@@ -420,6 +433,7 @@ Result extract(const py::object& points_object, const py::object& threads, py::o
   return make_result(std::move(features));
 }
 
+/// `Result.__repr__()`.
 std::string result_repr(const Result& r)
 {
   return "<sharp_features.Result: " + std::to_string(r.network.polylines.size()) + " polylines, "
