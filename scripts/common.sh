@@ -14,6 +14,13 @@ SFE_CGAL_DATA_ARCHIVE="${SFE_CGAL_DATA_ARCHIVE:-/usr/share/doc/libcgal-dev/data.
 
 # Debian packages needed to build the package, its examples, tests and documentation.
 SFE_PACKAGES=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev catch2 doxygen)
+# Debian packages needed, besides those, to build and test the Python module (python/).
+# shellcheck disable=SC2034 # used by the scripts that source this file
+SFE_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest)
+# Debian's python3, for which the module is built and tested: another python3 coming first in
+# PATH (pyenv, conda, a virtual environment) would have neither these packages nor its headers.
+# shellcheck disable=SC2034 # used by the scripts that source this file
+SFE_PYTHON=/usr/bin/python3
 
 sfe_log() { printf '==> %s\n' "$*" >&2; }
 sfe_die() { printf 'error: %s\n' "$*" >&2; exit 1; }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with the tests and runs them; exits with the
-# status of ctest.
+# status of ctest, and in Release of the Python module's tests (pytest, python/tests) as well.
 #
 #   bash scripts/test.sh                the Release suite, in build/ (the README's command)
 #   bash scripts/test.sh --assertions   the suite with CGAL's assertions and preconditions on
@@ -20,6 +20,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$SFE_ROOT"
 
 mode=release
+python_packages=()
 case "${1:-}" in
   --assertions|--sanitize) mode="${1#--}"; shift ;;
 esac
@@ -28,6 +29,9 @@ build_options=(-DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=ON -DSFE_BUILD_BENCHMAR
 case "$mode" in
   release)
     build_options+=(-DSFE_BUILD_MESHING=ON)
+    # The Python module, for Debian's python3, and its tests after ctest (Release only).
+    build_options+=(-DSFE_BUILD_PYTHON=ON -DPython_EXECUTABLE="$SFE_PYTHON")
+    python_packages=("${SFE_PYTHON_PACKAGES[@]}")
     ;;
   assertions)
     SFE_BUILD_DIR="$SFE_ROOT/build-assertions"
@@ -35,7 +39,7 @@ case "$mode" in
     # CGAL_assertion and CGAL_precondition are checked.
     # The examples are left out (no test runs them; the Release run builds them), and so are
     # the Mesh_3 tests: their translation unit alone takes over 5 minutes and 5 GB to compile.
-    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF
+    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DSFE_BUILD_PYTHON=OFF
                     -DCMAKE_BUILD_TYPE=Assertions -DCMAKE_CXX_FLAGS_ASSERTIONS=-O2)
     ;;
   sanitize)
@@ -60,7 +64,7 @@ case "$mode" in
     sanitized_programs=(test_covering)
     build_options+=(-DSFE_TESTS_AS_ONE_PROGRAM=ON)
     sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DCMAKE_BUILD_TYPE=Sanitize
+    build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DSFE_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=Sanitize
                     "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -g1 $sanitizers"
                     "-DCMAKE_EXE_LINKER_FLAGS_SANITIZE=$sanitizers")
     # Any finding ends the test process with a non-zero status, so ctest counts it as failed:
@@ -71,7 +75,7 @@ case "$mode" in
     ;;
 esac
 
-install_missing_packages "${SFE_PACKAGES[@]}"
+install_missing_packages "${SFE_PACKAGES[@]}" "${python_packages[@]}"
 ctest_selection=()
 if [ "$mode" = sanitize ]; then
   # Only the program test_covering is built and run (see above).
@@ -103,4 +107,16 @@ status=0
 # --no-tests=error: a build that lost its tests must not pass.
 ctest --test-dir "$SFE_BUILD_DIR" --output-on-failure --no-tests=error -j "$SFE_JOBS" \
   "${ctest_selection[@]}" || status=$?
+
+# The Python module's tests, on the module and the program of this build, whenever the module
+# is built (an extra argument can switch it off). No bytecode caches in the source tree.
+python_on="$(sed -n 's/^SFE_BUILD_PYTHON:BOOL=//p' "$SFE_BUILD_DIR/CMakeCache.txt")"
+if [ "$mode" = release ] && [ "$python_on" = ON ]; then
+  sfe_log "running the Python module's tests"
+  python_status=0
+  PYTHONPATH="$SFE_BUILD_DIR/python" PYTHONDONTWRITEBYTECODE=1 \
+    SFE_EXTRACT_PROGRAM="$SFE_BUILD_DIR/examples/Sharp_feature_extraction/extract_sharp_features" \
+    "$SFE_PYTHON" -m pytest -p no:cacheprovider -q "$SFE_ROOT/python/tests" || python_status=$?
+  [ "$status" -ne 0 ] || status="$python_status"
+fi
 exit "$status"

@@ -1,0 +1,138 @@
+// Copyright (c) 2026 The Sharp_feature_extraction authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The docstrings of the Python module `sharp_features` (what `help()` shows), kept apart from
+// the bindings so that both read easily.
+
+#ifndef SFE_PYTHON_SHARP_FEATURES_DOCSTRINGS_H
+#define SFE_PYTHON_SHARP_FEATURES_DOCSTRINGS_H
+
+namespace docstrings {
+
+constexpr const char* module = R"doc(Sharp feature curves of a point cloud.
+
+The five stages of Daniels et al. 2007 (candidate points, RMLS projection, smoothing,
+polyline growing, completion), as implemented by the C++ package
+CGAL::Sharp_feature_extraction, on a NumPy array of points:
+
+    import numpy as np, sharp_features
+    points = np.loadtxt("cloud.xyz")[:, :3]
+    result = sharp_features.extract(points, sharpness_angle=30)
+    print(len(result.polylines), "curves,", len(result.corners), "corners")
+    result.write_polylines("curves.polylines.txt")
+)doc";
+
+constexpr const char* cancelled = R"doc(Raised by extract() when the progress function returns False.
+
+No partial result is returned. Ctrl-C raises KeyboardInterrupt instead, and an exception
+raised by the progress function propagates unchanged.)doc";
+
+constexpr const char* extract = R"doc(Extracts the sharp feature curves of a point cloud.
+
+Parameters
+----------
+points : array_like, shape (N, 3)
+    The point coordinates; no normals are needed. A C-contiguous float64 array is read in place;
+    any other array (float32, non-contiguous, a list of triples) is converted once.
+threads : int or None
+    Number of threads (None: all cores). The result does not depend on it. The limit is
+    process-wide while the call runs.
+progress : callable or None
+    Called on the calling thread with the fraction of the work done (a float in [0, 1]).
+    Returning False (or any false value except None) cancels: extract() then raises
+    sharp_features.Cancelled. An exception it raises stops the run and propagates.
+    Ctrl-C also cancels (KeyboardInterrupt), with or without a progress function.
+
+The other keywords are the named parameters of CGAL::extract_sharp_features(), under the
+same names; None, or leaving one out, selects its default:
+
+degree_fitting : int
+    Degree of the fitted height fields: 1 (planes) or 2 (quadrics). Default 2.
+threshold_distance : float
+    Candidate threshold tau (a distance); negative: derived from the data (the default).
+sharpness_angle : float
+    Smallest angle, in degrees, between the normals of two surfaces at a sharp feature,
+    in (0, 90). Default 25.
+number_of_iterations : int
+    Number of smoothing passes (stage 3). Default 3.
+maximum_angle : float
+    Half-angle, in degrees, of the completion search cone at a free end, in (0, 90). Default 30.
+number_of_relaxation_steps : int
+    Laplacian smoothing passes over the completed curves (stage 5). Default 2.
+candidate_neighbors, rmls_neighbors : int
+    Number of points in a stage-1 and in a stage-2 (RMLS) neighbourhood. 0: derived from the
+    data (the default).
+rmls_tolerance, corner_radius, growth_radius, completion_distance : float
+    Distances: the largest residual of a point on a smooth surface (stage 2), the radius
+    within which corner points are one corner, the polyline growing radius, the largest gap
+    bridged by completion. 0: derived from the data (the default).
+
+Result.scales reports the scales used, derived or given.
+
+Returns
+-------
+Result
+    The curves, their normals, the corners, the scales and the timings.
+
+Raises
+------
+ValueError
+    A coordinate or a parameter is out of range (NaN, infinity, an angle outside (0, 90)...),
+    with the library's message, or points does not have shape (N, 3).
+TypeError
+    An unknown keyword, or a value of the wrong type.
+Cancelled
+    The progress function returned False.
+)doc";
+
+constexpr const char* result = R"doc(The sharp feature curves of a point cloud, as extract() returns them.
+
+The coordinates are float64 arrays that belong to the result; curves meeting at a corner share
+its exact point, and a closed curve repeats its first point at the end.)doc";
+
+constexpr const char* polylines = R"doc(The curves.
+
+A list of (n, 3) arrays, one per curve, the vertices in order along it.)doc";
+
+constexpr const char* normals = R"doc(The normals of the two surfaces meeting along each curve.
+
+A list of (n, 2, 3) arrays: normals[i][j] holds the two unit normals at polylines[i][j], each
+oriented away from the other surface, in the same order along the whole curve.)doc";
+
+constexpr const char* corners = R"doc(The corners where curves end.
+
+An (m, 3) array of points; corner_polylines gives the curves incident to each.)doc";
+
+constexpr const char* corner_polylines = R"doc(The curves incident to each corner.
+
+A list of m integer arrays: corner_polylines[k] holds the indices (into polylines) of the curves
+that start or end at corners[k].)doc";
+
+constexpr const char* scales = R"doc(The scales the extraction used, derived from the data or given.
+
+A dict with the fields of CGAL::Sharp_feature_scales: spacing, noise, candidate_neighbors,
+candidate_radius, rmls_neighbors, residual_threshold, rmls_tolerance, corner_radius,
+growth_radius, completion_distance.)doc";
+
+constexpr const char* timings = R"doc(Wall-clock seconds of each step.
+
+A dict: context (reading the points and estimating the scales), candidates, projection,
+smoothing, growing, completion, and total.)doc";
+
+constexpr const char* result_repr = R"doc(A one-line summary: the numbers of curves and corners.)doc";
+
+constexpr const char* write_polylines = R"doc(Writes the curves in Mesh_3's polyline format.
+
+One curve per line, "n x1 y1 z1 ... xn yn zn", every double written so that it reads back
+exactly: the file the extract_sharp_features program writes with -o. path is a str or an
+os.PathLike; raises OSError if the file cannot be written.)doc";
+
+constexpr const char* write_ply = R"doc(Writes the curves as an ASCII PLY.
+
+The curve vertices with both normals, a corner flag and a curve index, and one edge per
+segment: the file the extract_sharp_features program writes with --ply. path is a str or an
+os.PathLike; raises OSError if the file cannot be written.)doc";
+
+} // namespace docstrings
+
+#endif

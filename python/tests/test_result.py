@@ -1,0 +1,88 @@
+"""sharp_features.Result: its arrays, and its writers, whose files equal those of the
+extract_sharp_features program on the same cloud."""
+
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import sharp_features
+
+SCALES = {"spacing", "noise", "candidate_neighbors", "candidate_radius", "rmls_neighbors", "residual_threshold",
+          "rmls_tolerance", "corner_radius", "growth_radius", "completion_distance"}
+TIMINGS = {"context", "candidates", "projection", "smoothing", "growing", "completion", "total"}
+
+
+@pytest.fixture(scope="module")
+def cube_result(cube):
+    return sharp_features.extract(cube)
+
+
+def test_each_polyline_has_one_pair_of_unit_normals_per_vertex(cube_result):
+    assert len(cube_result.normals) == len(cube_result.polylines)
+    for points, normals in zip(cube_result.polylines, cube_result.normals):
+        assert points.dtype == np.float64 and points.ndim == 2 and points.shape[1] == 3
+        assert normals.shape == (len(points), 2, 3)
+        assert np.allclose(np.linalg.norm(normals, axis=2), 1)
+
+
+def test_each_corner_is_the_exact_end_point_of_its_incident_polylines(cube_result):
+    assert len(cube_result.corner_polylines) == len(cube_result.corners)
+    for corner, incident in zip(cube_result.corners, cube_result.corner_polylines):
+        assert len(incident) > 0
+        for i in incident:
+            ends = cube_result.polylines[i][[0, -1]]
+            assert any(np.array_equal(corner, end) for end in ends)
+
+
+def test_scales_and_timings_are_reported_by_name(cube_result):
+    assert set(cube_result.scales) == SCALES
+    assert all(value > 0 for name, value in cube_result.scales.items() if name != "noise")
+    assert set(cube_result.timings) == TIMINGS
+    assert cube_result.timings["total"] == pytest.approx(sum(v for k, v in cube_result.timings.items() if k != "total"))
+    assert repr(cube_result) == "<sharp_features.Result: 12 polylines, 8 corners>"
+
+
+def test_the_polylines_file_reads_back_as_the_polylines(cube_result, tmp_path):
+    path = tmp_path / "cube.polylines.txt"
+    cube_result.write_polylines(path)
+    lines = path.read_text().splitlines()
+    assert len(lines) == len(cube_result.polylines)
+    for line, points in zip(lines, cube_result.polylines):
+        numbers = line.split()
+        assert int(numbers[0]) == len(points)
+        assert np.array_equal(np.array(numbers[1:], dtype=np.float64).reshape(-1, 3), points)
+
+
+def test_writing_to_a_missing_directory_raises_os_error(cube_result, tmp_path):
+    with pytest.raises(OSError, match="cannot write"):
+        cube_result.write_polylines(tmp_path / "missing" / "cube.polylines.txt")
+    with pytest.raises(OSError, match="cannot write"):
+        cube_result.write_ply(str(tmp_path / "missing" / "cube.ply"))
+
+
+# Parameters of the comparison with the program: its option and the keyword of extract().
+OVERRIDES = {
+    "defaults": ([], {}),
+    "overrides": (["--sharpness-angle", "30", "--growth-radius", "0.09", "--smoothing-passes", "2",
+                   "--candidate-neighbors", "30"],
+                  dict(sharpness_angle=30, growth_radius=0.09, number_of_iterations=2, candidate_neighbors=30)),
+}
+
+
+@pytest.mark.parametrize("case", sorted(OVERRIDES))
+def test_the_files_equal_those_of_the_program_byte_for_byte(cube, extract_program, tmp_path, case):
+    options, keywords = OVERRIDES[case]
+    cloud = tmp_path / "cube.xyz"
+    np.savetxt(cloud, cube, fmt="%.17g")  # 17 significant digits: the program reads the same doubles
+    program_output = {"polylines": tmp_path / "program.polylines.txt", "ply": tmp_path / "program.ply"}
+    subprocess.run([str(extract_program), str(cloud), "-o", str(program_output["polylines"]),
+                    "--ply", str(program_output["ply"]), "--quiet", *options], check=True)
+
+    result = sharp_features.extract(cube, **keywords)
+    result.write_polylines(tmp_path / "module.polylines.txt")
+    result.write_ply(tmp_path / "module.ply")
+    assert len(result.polylines) > 0
+    assert (tmp_path / "module.polylines.txt").read_bytes() == program_output["polylines"].read_bytes()
+    assert (tmp_path / "module.ply").read_bytes() == program_output["ply"].read_bytes()
