@@ -264,9 +264,9 @@ def plot_scaling(ours_rows, vcm_rows, path):
     fig, (ax_time, ax_memory) = plt.subplots(1, 2, figsize=(10, 4))
     n = [r["points"] for r in ours_rows]
     ax_time.loglog(n, [r["time_total"] for r in ours_rows], "o-", color="tab:blue", lw=2.5, label="ours, total")
-    for stage, style in (("candidates", ":"), ("projection", "--"), ("smoothing", "-."), ("growing", ":"),
-                         ("completion", "--")):
-        values = [max(r[f"time_{stage}"], 1e-3) for r in ours_rows]
+    for stage, style in (("context", "-"), ("candidates", ":"), ("projection", "--"), ("smoothing", "-."),
+                         ("growing", ":"), ("completion", "--")):
+        values = [max(r.get(f"time_{stage}", 0), 1e-3) for r in ours_rows]
         ax_time.loglog(n, values, style, color="tab:blue", alpha=0.6, lw=1, label=f"ours, {stage}")
     if vcm_rows:
         ax_time.loglog([r["points"] for r in vcm_rows], [r["time_total"] for r in vcm_rows], "s-",
@@ -607,13 +607,13 @@ def write_report(data, report, quick):
     for r in s_ours:
         v = vcm_by_n.get(r["points"])
         vtime = secs(v["time_total"]) if v else vcm_status.get(r["points"], "-")
-        rows.append([f"{r['points']:,}", secs(r["time_candidates"]), secs(r["time_projection"]), secs(r["time_smoothing"]),
+        rows.append([f"{r['points']:,}", secs(r["time_candidates"] + r.get("time_context", 0)), secs(r["time_projection"]), secs(r["time_smoothing"]),
                      secs(r["time_growing"]), secs(r["time_completion"]), f"**{secs(r['time_total'])}**", vtime,
                      fmt(r["time_total"] / v["time_total"], 2) if v else "-",
                      " / ".join(fmt(r.get(f"heap_{s}_mb"), 0) for s in ("candidates", "projection", "smoothing", "growing", "completion")),
                      fmt(r["heap_peak_mb"], 0), fmt(r["rss_peak_mb"], 0), fmt(v["rss_peak_mb"], 0) if v else "-",
                      fmt(r.get("ours_f1@0.5"))])
-    w(table(["points", "candidates (s)", "projection", "smoothing", "growing", "completion", "ours total", "VCM (s)",
+    w(table(["points", "context + candidates (s)", "projection", "smoothing", "growing", "completion", "ours total", "VCM (s)",
              "ours / VCM", "heap per stage (MB)", "heap, whole run (MB)", "ours peak RSS (MB)", "VCM peak RSS (MB)",
              "ours F1 0.5%"], rows))
     w("\nHeap per stage: peak bytes allocated through operator new while that stage alone runs, above what "
@@ -637,7 +637,7 @@ def write_report(data, report, quick):
                 continue
             v = vcm_speed.get(r["label"])
             rows.append([f"{r['points']:,}", pct(r.get("noise", 0), 2), r.get("threads") or "all",
-                         secs(r["time_candidates"]), secs(r["time_projection"]), secs(r["time_smoothing"]),
+                         secs(r["time_candidates"] + r.get("time_context", 0)), secs(r["time_projection"]), secs(r["time_smoothing"]),
                          secs(r["time_growing"]), secs(r["time_completion"]), f"**{secs(r['time_total'])}**",
                          fmt(r["time_total"] / r["points"] * 1e6, 2),
                          secs(v["time_total"]) if v else "-",
@@ -645,7 +645,7 @@ def write_report(data, report, quick):
                          fmt(r["heap_peak_mb"] * 1048576 / r["points"], 0),
                          fmt(r["rss_peak_mb"] * 1048576 / r["points"], 0),
                          fmt(r.get("ours_f1@0.5"))])
-        w(table(["points", "noise (% dB)", "threads", "candidates (s)", "projection", "smoothing", "growing",
+        w(table(["points", "noise (% dB)", "threads", "context + candidates (s)", "projection", "smoothing", "growing",
                  "completion", "ours total", "us per point", "VCM (s)", "VCM / ours", "heap B per point",
                  "peak RSS B per point", "ours F1 0.5%"], rows))
         same_path = os.path.join(data, "speed_threads.txt")

@@ -1,5 +1,6 @@
 // Draws a point cloud and its feature curves into a PNG picture: two 3/4 views from opposite
-// sides, points in grey, each curve in its own colour, corners as dots.
+// sides, points in grey (or tinted by surface patch), each curve in its own colour, corners as
+// dots.
 //
 //   render_feature_curves fandisk_100k.xyz --polylines fandisk.polylines.txt -o fandisk.png
 
@@ -26,7 +27,7 @@ using Point = std::array<double, 3>;
 
 const char* const usage =
   "usage: render_feature_curves CLOUD.xyz [--polylines CURVES.polylines.txt] -o OUT.png\n"
-  "                             [--width W] [--height H] [--max-points M]\n"
+  "                             [--patches LABELS.txt] [--width W] [--height H] [--max-points M]\n"
   "\n"
   "Writes a PNG picture with two 3/4 views (front and back) of a point cloud and its feature\n"
   "curves.\n"
@@ -34,6 +35,8 @@ const char* const usage =
   "  CLOUD.xyz          points, one per line: 'x y z' or 'x y z nx ny nz' ('#' starts a comment)\n"
   "  --polylines FILE   curves, one per line: 'n x1 y1 z1 ... xn yn zn' (CGAL Mesh_3 format);\n"
   "                     polyline ends shared by 2+ curves, or by 3+ ends, are drawn as corners\n"
+  "  --patches FILE     one patch label per point, in the cloud's order ('extract_sharp_features\n"
+  "                     --patches'): points are tinted by patch, dark grey for -1\n"
   "  -o OUT.png         output picture (required)\n"
   "  --width W          picture width in pixels (default 1600)\n"
   "  --height H         picture height in pixels (default 800)\n"
@@ -44,6 +47,7 @@ struct Arguments
 {
   std::string cloud;
   std::string polylines;
+  std::string patches;
   std::string output;
   int width = 1600;
   int height = 800;
@@ -75,6 +79,8 @@ Arguments parse_arguments(int argc, char** argv)
       arguments.output = value();
     else if(option == "--polylines")
       arguments.polylines = value();
+    else if(option == "--patches")
+      arguments.patches = value();
     else if(option == "--width")
       arguments.width = int(parse_positive_integer(option, value(), 20000));
     else if(option == "--height")
@@ -203,12 +209,30 @@ std::vector<Point> corners_of(const std::vector<std::vector<Point>>& polylines)
   return corners;
 }
 
-// At most `max_points` points, evenly spread over the input order.
-std::vector<Point> subsample(const std::vector<Point>& points, std::size_t max_points)
+// One tint per point from a file of patch labels (one integer per line, -1: no patch).
+std::vector<sfe_utilities::Colour> read_patch_tints(const std::string& path, std::size_t number_of_points)
+{
+  std::ifstream in(path);
+  if(!in)
+    throw std::runtime_error("cannot open patch labels '" + path + "'");
+  std::vector<sfe_utilities::Colour> tints;
+  const std::size_t none = std::size_t(-1);
+  long long label = 0;
+  while(in >> label)
+    tints.push_back(sfe_utilities::patch_tint(label < 0 ? none : std::size_t(label), none));
+  if(!in.eof() || tints.size() != number_of_points)
+    throw std::runtime_error("'" + path + "' must hold one integer label per point (" + std::to_string(number_of_points) +
+                             "), read " + std::to_string(tints.size()));
+  return tints;
+}
+
+// At most `max_points` items, evenly spread over the input order.
+template <typename Item>
+std::vector<Item> subsample(const std::vector<Item>& points, std::size_t max_points)
 {
   if(points.size() <= max_points)
     return points;
-  std::vector<Point> kept;
+  std::vector<Item> kept;
   kept.reserve(max_points);
   for(std::size_t i = 0; i < max_points; ++i)
     kept.push_back(points[std::size_t((static_cast<long double>(i) * points.size()) / max_points)]);
@@ -227,13 +251,17 @@ int main(int argc, char** argv)
 
   try {
     const Arguments arguments = parse_arguments(argc, argv);
-    const std::vector<Point> points = subsample(read_xyz(arguments.cloud), arguments.max_points);
+    const std::vector<Point> all_points = read_xyz(arguments.cloud);
+    const std::vector<Point> points = subsample(all_points, arguments.max_points);
+    const std::vector<sfe_utilities::Colour> tints =
+      arguments.patches.empty() ? std::vector<sfe_utilities::Colour>()
+                                : subsample(read_patch_tints(arguments.patches, all_points.size()), arguments.max_points);
     const std::vector<std::vector<Point>> polylines =
       arguments.polylines.empty() ? std::vector<std::vector<Point>>() : read_polylines(arguments.polylines);
     const std::vector<Point> corners = corners_of(polylines);
 
     sfe_utilities::Png_image image(arguments.width, arguments.height);
-    sfe_utilities::render_side_by_side(image, points, polylines, corners, sfe_utilities::front_and_back_views());
+    sfe_utilities::render_side_by_side(image, points, polylines, corners, sfe_utilities::front_and_back_views(), tints);
     if(!image.write(arguments.output))
       throw std::runtime_error("cannot write '" + arguments.output + "'");
     std::cout << "wrote " << arguments.output << " (" << arguments.width << "x" << arguments.height << "): "

@@ -60,8 +60,8 @@ inline std::array<int, 4> viewport(const Png_image& image, const Render_view& vi
 }
 
 inline void render_with_splats(Png_image& image, const std::vector<Point>& points, const std::vector<Splat>& splats,
-                               const std::vector<std::vector<Point>>& polylines, const std::vector<Point>& corners,
-                               const Render_view& view)
+                               const std::vector<Colour>& tints, const std::vector<std::vector<Point>>& polylines,
+                               const std::vector<Point>& corners, const Render_view& view)
 {
   const std::array<int, 4> port = viewport(image, view);
   const int x0 = port[0], y0 = port[1];
@@ -73,15 +73,18 @@ inline void render_with_splats(Png_image& image, const std::vector<Point>& point
 
   Frame frame(port[2], port[3]);
   for(std::size_t i = 0; i < points.size(); ++i)
-    draw_splat(frame, projection, points[i], splats[i], view.splat_scale * splats[i].radius);
+    draw_splat(frame, projection, points[i], splats[i], view.splat_scale * splats[i].radius,
+               tints.empty() ? Colour{255, 255, 255} : tints[i]);
   const double typical_radius = view.splat_scale * median_radius(splats);
   close_pinholes(frame, 2 * typical_radius);
   for(int y = 0; y < frame.height; ++y)
     for(int x = 0; x < frame.width; ++x) {
       const std::size_t i = frame.index(x, y);
       if(std::isfinite(frame.depth[i])) {
-        const auto level = static_cast<unsigned char>(std::clamp(255.f * frame.grey[i], 0.f, 255.f));
-        image.set_pixel(x0 + x, y0 + y, level, level, level);
+        auto level = [&](int channel) {
+          return static_cast<unsigned char>(std::clamp(frame.grey[i] * float(frame.tint[i][channel]), 0.f, 255.f));
+        };
+        image.set_pixel(x0 + x, y0 + y, level(0), level(1), level(2));
       }
     }
 
@@ -114,15 +117,32 @@ inline void render_points_and_polylines(Png_image& image, const std::vector<std:
                                         const std::vector<std::vector<std::array<double, 3>>>& polylines,
                                         const std::vector<std::array<double, 3>>& corners, const Render_view& view)
 {
-  rendering_internal::render_with_splats(image, points, rendering_internal::estimate_splats(points), polylines,
+  rendering_internal::render_with_splats(image, points, rendering_internal::estimate_splats(points), {}, polylines,
                                          corners, view);
+}
+
+/// An RGB colour.
+using rendering_internal::Colour;
+
+/// A light colour for patch `label` (shaded like the grey points, so the surface still reads),
+/// dark grey for `unassigned`.
+inline Colour patch_tint(std::size_t label, std::size_t unassigned)
+{
+  if(label == unassigned)
+    return Colour{90, 90, 90};
+  const std::vector<Colour>& palette = rendering_internal::curve_palette();
+  const Colour& c = palette[label % palette.size()];
+  return Colour{static_cast<unsigned char>((c[0] + 255) / 2), static_cast<unsigned char>((c[1] + 255) / 2),
+                static_cast<unsigned char>((c[2] + 255) / 2)};
 }
 
 /// splits `image` into as many equal columns as `views` (their viewports are ignored) and
 /// renders the scene once per column, at one common scale so that sizes compare across views.
+/// `tints`: one colour per point that its grey shade multiplies (empty: plain grey).
 inline void render_side_by_side(Png_image& image, const std::vector<std::array<double, 3>>& points,
                                 const std::vector<std::vector<std::array<double, 3>>>& polylines,
-                                const std::vector<std::array<double, 3>>& corners, std::vector<Render_view> views)
+                                const std::vector<std::array<double, 3>>& corners, std::vector<Render_view> views,
+                                const std::vector<Colour>& tints = {})
 {
   if(views.empty())
     return;
@@ -143,7 +163,7 @@ inline void render_side_by_side(Png_image& image, const std::vector<std::array<d
     view.viewport_x = c * column_width;
     if(view.scale <= 0)
       view.scale = common_scale;
-    rendering_internal::render_with_splats(image, points, splats, polylines, corners, view);
+    rendering_internal::render_with_splats(image, points, splats, tints, polylines, corners, view);
   }
 }
 

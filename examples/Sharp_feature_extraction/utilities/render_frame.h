@@ -130,12 +130,14 @@ struct Frame
   int width, height;
   std::vector<float> depth; // +infinity where no splat was drawn
   std::vector<float> grey;  // shade of the front splat, in [0,1]
+  std::vector<Colour> tint; // colour of the front splat's point (white: plain grey)
   std::vector<float> overlay_alpha;
   std::vector<Colour> overlay_colour;
 
   Frame(int w, int h)
     : width(w), height(h), depth(std::size_t(w) * std::size_t(h), std::numeric_limits<float>::infinity()),
-      grey(depth.size(), 1.f), overlay_alpha(depth.size(), 0.f), overlay_colour(depth.size(), Colour{0, 0, 0})
+      grey(depth.size(), 1.f), tint(depth.size(), Colour{255, 255, 255}), overlay_alpha(depth.size(), 0.f),
+      overlay_colour(depth.size(), Colour{0, 0, 0})
   {}
 
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
@@ -166,7 +168,7 @@ inline double surface_grey(const Point& view_normal, double t)
 // Rasterises the disc of one splat: for each pixel, the depth where the pixel's line of sight
 // meets the disc plane, kept if inside the disc and in front of what the pixel shows.
 inline void draw_splat(Frame& frame, const Projection& projection, const Point& point, const Splat& splat,
-                       double radius)
+                       double radius, const Colour& tint)
 {
   const double min_facing = 0.2; // limits the depth slope of discs seen edge-on
   Point n = projection.rotate(splat.normal);
@@ -194,22 +196,25 @@ inline void draw_splat(Frame& frame, const Projection& projection, const Point& 
       if(depth < frame.depth[i]) {
         frame.depth[i] = depth;
         frame.grey[i] = grey;
+        frame.tint[i] = tint;
       }
     }
 }
 
 // Closes pinholes left between random discs: a pixel that is empty, or that sees a farther
 // surface through the gap (deeper than `see_through` behind its neighbours), takes the mean
-// depth and shade of its neighbours if at least 7 of the 8 are in front of it (pixels just
-// outside a silhouette have at most 5).
+// depth and shade of its neighbours (and the tint of the last of them) if at least 7 of the 8
+// are in front of it (pixels just outside a silhouette have at most 5).
 inline void close_pinholes(Frame& frame, double see_through)
 {
   const std::vector<float> depth = frame.depth, grey = frame.grey;
+  const std::vector<Colour> tint = frame.tint;
   for(int y = 1; y + 1 < frame.height; ++y)
     for(int x = 1; x + 1 < frame.width; ++x) {
       const float centre = depth[frame.index(x, y)];
       int covering = 0;
       double depth_sum = 0, grey_sum = 0;
+      Colour neighbour_tint = tint[frame.index(x, y)];
       for(int dy = -1; dy <= 1; ++dy)
         for(int dx = -1; dx <= 1; ++dx) {
           const std::size_t j = frame.index(x + dx, y + dy);
@@ -217,11 +222,13 @@ inline void close_pinholes(Frame& frame, double see_through)
             ++covering;
             depth_sum += depth[j];
             grey_sum += grey[j];
+            neighbour_tint = tint[j];
           }
         }
       if(covering >= 7) {
         frame.depth[frame.index(x, y)] = float(depth_sum / covering);
         frame.grey[frame.index(x, y)] = float(grey_sum / covering);
+        frame.tint[frame.index(x, y)] = neighbour_tint;
       }
     }
 }

@@ -29,68 +29,6 @@ constexpr double neighborhood_guess_factor = 1.5;
 /// Below this many points, every query goes to the k-d tree.
 constexpr std::size_t smallest_gridded_set = 4096;
 
-/// The points of a set sorted by the cubic cells of a grid (side `cell`, origin `low`): the
-/// cells in ascending key order, each with its points in ascending order.
-class Cell_grid
-{
-public:
-  Cell_grid(const std::vector<Vec3>& points, const Vec3& low, double cell) : m_low(low), m_cell(cell)
-  {
-    const std::size_t n = points.size();
-    m_keyed.resize(n);
-    for(std::size_t i = 0; i < n; ++i)
-      m_keyed[i] = std::make_pair(Grid_key::of(points[i], low, cell), i);
-    std::sort(m_keyed.begin(), m_keyed.end());
-    for(std::size_t i = 0; i < n; ++i)
-      if(i == 0 || m_keyed[i].first != m_keyed[i - 1].first)
-      {
-        m_cell_key.push_back(m_keyed[i].first);
-        m_cell_start.push_back(i);
-      }
-    m_cell_start.push_back(n);
-  }
-
-  std::size_t number_of_cells() const { return m_cell_key.size(); }
-
-  /// The points of cell `c`: `point(c, j)` for `j` from 0 to `size(c)`.
-  std::size_t size(std::size_t c) const { return m_cell_start[c + 1] - m_cell_start[c]; }
-  std::size_t point(std::size_t c, std::size_t j) const { return m_keyed[m_cell_start[c] + j].second; }
-
-  /// The points of the 27 cells around cell `c` (itself included), appended to `out` (cleared).
-  void points_around(std::size_t c, std::vector<std::size_t>& out) const
-  {
-    const std::uint64_t x = Grid_key::x(m_cell_key[c]), y = Grid_key::y(m_cell_key[c]), z = Grid_key::z(m_cell_key[c]);
-    out.clear();
-    for(std::uint64_t dx = x - 1; dx <= x + 1; ++dx)
-      for(std::uint64_t dy = y - 1; dy <= y + 1; ++dy)
-      {
-        // The three cells along z are consecutive keys.
-        const auto from = std::lower_bound(m_cell_key.begin(), m_cell_key.end(), Grid_key::pack(dx, dy, z - 1));
-        for(auto it = from; it != m_cell_key.end() && *it <= Grid_key::pack(dx, dy, z + 1); ++it)
-        {
-          const std::size_t d = std::size_t(it - m_cell_key.begin());
-          for(std::size_t j = m_cell_start[d]; j < m_cell_start[d + 1]; ++j)
-            out.push_back(m_keyed[j].second);
-        }
-      }
-  }
-
-  /// The lowest corner of the box of the 27 cells around cell `c`.
-  Vec3 low_corner_around(std::size_t c) const
-  {
-    const std::uint64_t key = m_cell_key[c];
-    // Keys are offset by one cell (see `Grid_key`).
-    return m_low + m_cell * Vec3(double(Grid_key::x(key)) - 2, double(Grid_key::y(key)) - 2, double(Grid_key::z(key)) - 2);
-  }
-
-private:
-  Vec3 m_low;
-  double m_cell;
-  std::vector<std::pair<std::uint64_t, std::size_t>> m_keyed;
-  std::vector<std::uint64_t> m_cell_key;
-  std::vector<std::size_t> m_cell_start;
-};
-
 /// The `k` nearest of `candidates` to `p` (in `neighbors`, in no particular order), if they
 /// all lie within `margin` of `p` (then no point outside the candidates' box is closer); false
 /// otherwise. `previous` is the squared k-th distance of the point answered before (0 if
@@ -164,13 +102,15 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
     });
   }
 
-  const Cell_grid grid(points, low, cell);
+  Spatial_grid<Vec3> grid(cell, low);
+  for(std::size_t i = 0; i < n; ++i)
+    grid.insert(points[i], i);
   return parallel_blocks<ConcurrencyTag>(grid.number_of_cells(), progress, [&](std::size_t first, std::size_t last) {
     std::vector<std::size_t> candidates, neighbors;
     std::vector<std::pair<double, std::size_t>> ranked;
     for(std::size_t c = first; c < last; ++c)
     {
-      grid.points_around(c, candidates);
+      grid.ids_around(c, candidates);
       const Vec3 box_low = grid.low_corner_around(c);
       const Vec3 box_high = box_low + Vec3::Constant(3 * cell);
       // The previous point's k-th distance: the next one's is about the same, and only the
@@ -179,7 +119,7 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
       double previous = 0;
       for(std::size_t j = 0; j < grid.size(c); ++j)
       {
-        const std::size_t i = grid.point(c, j);
+        const std::size_t i = grid.id(c, j);
         const Vec3& p = points[i];
         const double margin = (std::min)((p - box_low).minCoeff(), (box_high - p).minCoeff());
         if(!nearest_among(points, p, candidates, k, margin, previous, ranked, neighbors))

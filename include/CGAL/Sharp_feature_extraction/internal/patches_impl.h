@@ -271,9 +271,53 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
   return true;
 }
 
+/// The size of the region of every point's root (0 for points that are not roots).
+inline std::vector<std::size_t> region_sizes(Disjoint_sets& sets, std::size_t n)
+{
+  std::vector<std::size_t> size(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    ++size[sets.find(i)];
+  return size;
+}
+
+/// One round of merging: every region smaller than `smallest` points joins the region it
+/// shares most links with (ties: the smaller root), as counted at the start of the round.
+/// Returns false when no small region has a link out.
+inline bool merge_small_regions_once(const std::vector<std::vector<std::size_t>>& links, std::size_t smallest,
+                                     Disjoint_sets& sets)
+{
+  const std::size_t n = links.size();
+  const std::vector<std::size_t> size = region_sizes(sets, n);
+  std::map<std::size_t, std::map<std::size_t, std::size_t>> shared; // small root -> root -> links
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t r = sets.find(i);
+    if(size[r] >= smallest)
+      continue;
+    for(std::size_t j : links[i])
+      if(sets.find(j) != r)
+        ++shared[r][sets.find(j)];
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> merges;
+  for(const auto& [r, counts] : shared)
+  {
+    std::size_t best = no_index, most = 0;
+    for(const auto& [other, count] : counts)
+      if(count > most)
+      {
+        best = other;
+        most = count;
+      }
+    merges.emplace_back(r, best);
+  }
+  for(const auto& [r, best] : merges)
+    sets.unite(r, best);
+  return !merges.empty();
+}
+
 /// Merges the regions smaller than `smallest` points into the region they share most links
 /// with (crossing links included: a sliver of band on the wrong side of its curve joins the
-/// face around it), smallest first; regions left small without any link are unassigned
+/// face around it), round after round; regions left small without any link are unassigned
 /// (outliers). Then numbers the regions 0, 1, ... by their smallest point.
 inline void merge_small_regions(const std::vector<std::vector<std::size_t>>& links, std::size_t smallest,
                                 Patch_labels& labels)
@@ -284,47 +328,9 @@ inline void merge_small_regions(const std::vector<std::vector<std::size_t>>& lin
     if(labels.label[i] != no_index)
       sets.unite(i, labels.label[i]);
   for(bool merged = true; merged;)
-  {
-    merged = false;
-    std::vector<std::size_t> size(n, 0);
-    for(std::size_t i = 0; i < n; ++i)
-      ++size[sets.find(i)];
-    std::vector<std::size_t> small;
-    for(std::size_t r = 0; r < n; ++r)
-      if(size[r] > 0 && size[r] < smallest)
-        small.push_back(r);
-    std::stable_sort(small.begin(), small.end(), [&](std::size_t a, std::size_t b) { return size[a] < size[b]; });
-    // Links from every small region to the others, counted.
-    std::map<std::size_t, std::map<std::size_t, std::size_t>> shared;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const std::size_t r = sets.find(i);
-      if(size[r] >= smallest)
-        continue;
-      for(std::size_t j : links[i])
-        if(sets.find(j) != r)
-          ++shared[r][sets.find(j)];
-    }
-    for(std::size_t r : small)
-    {
-      const auto it = shared.find(r);
-      if(it == shared.end())
-        continue;
-      std::size_t best = no_index, most = 0;
-      for(const auto& [other, count] : it->second)
-        if(count > most)
-        {
-          best = other;
-          most = count;
-        }
-      sets.unite(r, best);
-      merged = true;
-      break; // sizes and links changed: recount
-    }
-  }
-  std::vector<std::size_t> size(n, 0), number(n, no_index);
-  for(std::size_t i = 0; i < n; ++i)
-    ++size[sets.find(i)];
+    merged = merge_small_regions_once(links, smallest, sets);
+  const std::vector<std::size_t> size = region_sizes(sets, n);
+  std::vector<std::size_t> number(n, no_index);
   labels.number_of_patches = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
