@@ -57,6 +57,21 @@ struct Mesh_polyline_contract
   /// Along one polyline, vertices closer than this many tolerances of arc length are
   /// neighbours, not a contact of the polyline with itself.
   static constexpr double same_curve_separation = 4;
+  /// The vertices of a curve within this many tolerances of arc length from one of its ends
+  /// belong to that end's junction: an end near them does not lie on the curve's interior.
+  static constexpr double junction_arc = 2;
+  /// Curves leaving a shared junction at an acute angle stay within the tolerance of each other
+  /// for up to this many tolerances from it (10: down to about 6 degrees): not a contact.
+  static constexpr double acute_departure_reach = 10;
+  /// Contacts between two curves closer than this many tolerances of arc length apart belong
+  /// to one close run.
+  static constexpr double run_gap = 2;
+  /// A close run longer than this many tolerances on both curves is one crease found twice; a
+  /// shorter one is where two curves touch.
+  static constexpr double duplicate_run_extent = 4;
+  /// A curve with this share of its (densified) vertices within the tolerance of one longer
+  /// curve is that curve found twice.
+  static constexpr double covered_fraction = 0.7;
 };
 
 template <typename Point_3>

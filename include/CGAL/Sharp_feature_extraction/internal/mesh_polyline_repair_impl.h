@@ -217,9 +217,9 @@ void split_at_ends_touching_interiors(std::vector<Curve>& curves, double tol, Me
         const Curve& other = curves[v.first];
         const std::vector<double>& s = arcs[v.first];
         // skip vertices next to an end of the same curve that is this junction
-        if(other.points.front() == q && s[v.second] < 2 * tol)
+        if(other.points.front() == q && s[v.second] < Mesh_polyline_contract::junction_arc * tol)
           return;
-        if(other.points.back() == q && s.back() - s[v.second] < 2 * tol)
+        if(other.points.back() == q && s.back() - s[v.second] < Mesh_polyline_contract::junction_arc * tol)
           return;
         auto it = best.find(v.first);
         if(it == best.end() || d2 < it->second.first)
@@ -276,11 +276,12 @@ std::vector<Close_run> find_close_runs(const std::vector<Curve>& curves, double 
       if(curves[b.first].points[b.second] == pa)
         return;
       // curves leaving a shared junction are close to each other near it, for a while if
-      // they leave at an acute angle (10 tolerances: down to about 6 degrees): not a contact
+      // they leave at an acute angle (see `acute_departure_reach`): not a contact
       const Point_3& pb = curves[b.first].points[b.second];
       for(const Point_3* j : {&curves[a.first].points.front(), &curves[a.first].points.back()})
         if((*j == curves[b.first].points.front() || *j == curves[b.first].points.back()) &&
-           point_distance(pa, *j) < 10 * tol && point_distance(pb, *j) < 10 * tol)
+           point_distance(pa, *j) < Mesh_polyline_contract::acute_departure_reach * tol &&
+           point_distance(pb, *j) < Mesh_polyline_contract::acute_departure_reach * tol)
           return;
       if(a.first == b.first && std::abs(arcs[a.first][a.second] - arcs[b.first][b.second]) < Mesh_polyline_contract::same_curve_separation * tol)
         return;
@@ -295,7 +296,7 @@ std::vector<Close_run> find_close_runs(const std::vector<Curve>& curves, double 
     std::size_t begin = 0;
     while(begin < cs.size()) {
       std::size_t end = begin + 1;
-      while(end < cs.size() && cs[end].sa - cs[end - 1].sa < 2 * tol)
+      while(end < cs.size() && cs[end].sa - cs[end - 1].sa < Mesh_polyline_contract::run_gap * tol)
         ++end;
       Close_run run;
       run.a = group.first.first;
@@ -326,7 +327,8 @@ void drop_parallel_duplicates(std::vector<Curve>& curves, double tol, Mesh_3_pol
 {
   std::vector<bool> dropped(curves.size(), false);
   for(const Close_run& run : find_close_runs<Curve, Point_3>(curves, tol, true)) {
-    if(run.a == run.b || (run.extent_a <= 4 * tol && run.extent_b <= 4 * tol))
+    if(run.a == run.b || (run.extent_a <= Mesh_polyline_contract::duplicate_run_extent * tol &&
+                          run.extent_b <= Mesh_polyline_contract::duplicate_run_extent * tol))
       continue;
     if(dropped[run.a] || dropped[run.b])
       continue;
@@ -341,14 +343,13 @@ void drop_parallel_duplicates(std::vector<Curve>& curves, double tol, Mesh_3_pol
   curves = std::move(kept);
 }
 
-/// A curve lying mostly (70% of its vertices) within the tolerance of one longer curve is that
+/// A curve lying mostly (see `covered_fraction`) within the tolerance of one longer curve is that
 /// curve found twice, even when the two leave a shared junction at an acute angle (the
 /// close-run test ignores junction neighbourhoods): it goes. Curves are densified, so vertex
 /// counts measure length.
 template <typename Curve, typename Point_3>
 void drop_covered_curves(std::vector<Curve>& curves, double tol, Mesh_3_polyline_repair_report& report)
 {
-  const double covered_fraction = 0.7;
   Spatial_grid<Point_3> grid(tol);
   std::vector<std::size_t> owner;
   for(std::size_t c = 0; c < curves.size(); ++c)
@@ -377,7 +378,7 @@ void drop_covered_curves(std::vector<Curve>& curves, double tol, Mesh_3_polyline
     }
     for(const auto& nc : near_count)
       if(curve_length(curves[nc.first]) >= length_a &&
-         nc.second >= covered_fraction * curves[a].points.size()) {
+         nc.second >= Mesh_polyline_contract::covered_fraction * curves[a].points.size()) {
         dropped[a] = true;
         ++report.dropped_duplicates;
         break;
@@ -400,7 +401,8 @@ void resolve_interior_contacts(std::vector<Curve>& curves, double tol, Mesh_3_po
   std::map<std::size_t, std::vector<std::size_t>> splits;
   std::map<Vertex, Point_3> moves;
   for(const Close_run& run : find_close_runs<Curve, Point_3>(curves, tol, false)) {
-    if(run.extent_a > 4 * tol || run.extent_b > 4 * tol)
+    if(run.extent_a > Mesh_polyline_contract::duplicate_run_extent * tol ||
+       run.extent_b > Mesh_polyline_contract::duplicate_run_extent * tol)
       continue; // a self-parallel stretch: left alone (Mesh_3 copes with it, slowly)
     const Vertex va(run.a, run.closest_a), vb(run.b, run.closest_b);
     if(moves.count(va) || moves.count(vb))
