@@ -27,6 +27,7 @@
 #endif
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -247,10 +248,14 @@ private:
   std::optional<py::error_already_set> m_error;
 };
 
-/// Runs the extraction on the points of `points`; returns false if `callback` stopped it.
-/// Needs no GIL.
+/// The share of the progress range given to the extraction; the patches take the rest.
+constexpr double extraction_share_of_progress = 0.9;
+
+/// Runs the extraction on the points of `points`, then the segmentation into surface patches
+/// on the same extraction context; returns false if `callback` stopped it. Needs no GIL.
 bool run_extraction(const Point_array& points, const Extraction_parameters& p,
-                    const std::function<bool(double)>& callback, Features& features)
+                    const std::function<bool(double)>& callback, Features& features,
+                    CGAL::Surface_patches<Kernel>& patches)
 {
   namespace sfe = CGAL::Sharp_feature_extraction::parameters;
   const Array_point_map point_map{points.data()};
@@ -267,9 +272,16 @@ bool run_extraction(const Point_array& points, const Extraction_parameters& p,
                     .sharpness_angle(p.sharpness_angle)
                     .number_of_iterations(p.number_of_iterations)
                     .maximum_angle(p.maximum_angle)
-                    .number_of_relaxation_steps(p.number_of_relaxation_steps)
-                    .callback(callback);
-  return CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(indices, features, np);
+                    .number_of_relaxation_steps(p.number_of_relaxation_steps);
+  const CGAL::Sharp_feature_extraction_context<Kernel> context(indices, np);
+  // One progress from 0 to 1: the extraction, then the (much faster) patches.
+  const auto extraction_progress = [&](double x) { return callback(extraction_share_of_progress * x); };
+  const auto patch_progress = [&](double x) {
+    return callback(extraction_share_of_progress + (1 - extraction_share_of_progress) * x);
+  };
+  return context.extract_sharp_features(features, CGAL::parameters::callback(std::function<bool(double)>(extraction_progress)))
+         && context.segment_into_patches(features.network, patches,
+                                         CGAL::parameters::callback(std::function<bool(double)>(patch_progress)));
 }
 
 /// Limits the number of threads while it lives (0: no limit).
@@ -303,6 +315,7 @@ struct Result
   py::list normals;
   py::array_t<double> corners;
   py::list corner_polylines;
+  py::array_t<std::int64_t> patches;
   py::dict scales;
   py::dict timings;
 };
@@ -361,10 +374,22 @@ py::dict timings_dict(const CGAL::Sharp_feature_timings& t)
   return d;
 }
 
-/// Converts the final curve network of `features` for Python (with the GIL held).
-Result make_result(Features&& features)
+/// The patch of every point (-1: none) as an (N,) array.
+py::array_t<std::int64_t> labels_array(const CGAL::Surface_patches<Kernel>& patches)
+{
+  py::array_t<std::int64_t> array(py::ssize_t(patches.labels.size()));
+  std::int64_t* out = array.mutable_data();
+  for(std::size_t label : patches.labels)
+    *out++ = label == CGAL::Surface_patches<Kernel>::unassigned ? -1 : std::int64_t(label);
+  return array;
+}
+
+/// Converts the final curve network of `features` and the patch labels for Python (with the
+/// GIL held).
+Result make_result(Features&& features, const CGAL::Surface_patches<Kernel>& patches)
 {
   Result r;
+  r.patches = labels_array(patches);
   r.network = std::move(features.network);
   for(const auto& polyline : r.network.polylines)
   {
@@ -423,14 +448,15 @@ Result extract(const py::object& points_object, const py::object& threads, py::o
     throw py::type_error("progress must be callable or None");
   Progress_relay relay(std::move(progress));
   Features features;
+  CGAL::Surface_patches<Kernel> patches;
   bool finished = false;
   {
     py::gil_scoped_release released;
     const Thread_limit limit(thread_count);
-    finished = run_extraction(points, parameters, std::ref(relay), features);
+    finished = run_extraction(points, parameters, std::ref(relay), features, patches);
   }
   relay.raise_if_stopped(finished);
-  return make_result(std::move(features));
+  return make_result(std::move(features), patches);
 }
 
 /// `Result.__repr__()`.
@@ -453,6 +479,7 @@ PYBIND11_MODULE(sharp_features, m)
     .def_readonly("normals", &Result::normals, docstrings::normals)
     .def_readonly("corners", &Result::corners, docstrings::corners)
     .def_readonly("corner_polylines", &Result::corner_polylines, docstrings::corner_polylines)
+    .def_readonly("patches", &Result::patches, docstrings::patches)
     .def_readonly("scales", &Result::scales, docstrings::scales)
     .def_readonly("timings", &Result::timings, docstrings::timings)
     .def("write_polylines", &write_polylines, py::arg("path"), docstrings::write_polylines)

@@ -72,7 +72,7 @@ Result.scales reports the scales used, derived or given.
 Returns
 -------
 Result
-    The curves, their normals, the corners, the scales and the timings.
+    The curves, their normals, the corners, the surface patches, the scales and the timings.
 
 Raises
 ------
@@ -107,6 +107,12 @@ constexpr const char* corner_polylines = R"doc(The curves incident to each corne
 
 A list of m integer arrays: corner_polylines[k] holds the indices (into polylines) of the curves
 that start or end at corners[k].)doc";
+
+constexpr const char* patches = R"doc(The surface patch of every input point.
+
+An (N,) int64 array in the order of the points: the index of the patch that the curves enclose
+the point in (CGAL::segment_into_patches(): regions that never cross a curve), or -1 for a point
+in no patch (an outlier). Copies of a point share its patch.)doc";
 
 constexpr const char* scales = R"doc(The scales the extraction used, derived from the data or given.
 

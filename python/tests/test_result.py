@@ -86,3 +86,20 @@ def test_the_files_equal_those_of_the_program_byte_for_byte(cube, extract_progra
     assert len(result.polylines) > 0
     assert (tmp_path / "module.polylines.txt").read_bytes() == program_output["polylines"].read_bytes()
     assert (tmp_path / "module.ply").read_bytes() == program_output["ply"].read_bytes()
+
+
+def test_every_point_is_in_the_patch_of_its_cube_face(cube, cube_result):
+    patches = cube_result.patches
+    assert patches.shape == (len(cube),) and patches.dtype == np.int64
+    # The face of each point: the axis and sign of its coordinate at +-0.5.
+    axis = np.argmax(np.abs(cube), axis=1)
+    face = 2 * axis + (cube[np.arange(len(cube)), axis] > 0)
+    agree = 0
+    majority = set()
+    for f in range(6):
+        labels, counts = np.unique(patches[face == f], return_counts=True)
+        agree += counts.max()
+        majority.add(labels[np.argmax(counts)])
+    assert len(set(patches[patches >= 0])) == 6
+    assert len(majority) == 6
+    assert agree >= 0.99 * len(cube)
