@@ -429,11 +429,7 @@ public:
                                const NamedParameters& np = parameters::default_values()) const
   {
     namespace sfe = Sharp_feature_extraction::internal;
-    namespace own_np = Sharp_feature_extraction::internal_np;
-    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::growth_radius_t,
-                                     own_np::completion_distance_t, CGAL::internal_np::threshold_distance_t,
-                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
-                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+    static_assert(sfe::holds_only_projection_parameters<NamedParameters>(),
                   "rmls_project_candidates: a parameter of another stage");
     for(std::size_t i : candidates.indices)
       if(i >= m_input.input_size())
@@ -476,9 +472,7 @@ public:
                              const NamedParameters& np = parameters::default_values()) const
   {
     namespace sfe = Sharp_feature_extraction::internal;
-    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
-                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                     CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+    static_assert(sfe::holds_only_smoothing_parameters<NamedParameters>(),
                   "smooth_feature_points: a parameter of another stage, or a scale (fixed by the context)");
     return sfe::smooth_feature_point_set<ConcurrencyTag>(features, sfe::read_smoothing_parameters(np, m_smoothing_parameters),
                                                          sfe::read_callback(np, m_callback));
@@ -513,13 +507,7 @@ public:
                               const NamedParameters& np = parameters::default_values()) const
   {
     namespace sfe = Sharp_feature_extraction::internal;
-    namespace own_np = Sharp_feature_extraction::internal_np;
-    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
-                                     own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::completion_distance_t,
-                                     CGAL::internal_np::degree_fitting_t,
-                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
-                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+    static_assert(sfe::holds_only_growing_parameters<NamedParameters>(),
                   "grow_feature_polylines: a parameter of another stage");
     return sfe::grow_feature_curve_network(features, network, np, sfe::read_callback(np, m_callback));
   }
@@ -554,12 +542,7 @@ public:
                                   const NamedParameters& np = parameters::default_values()) const
   {
     namespace sfe = Sharp_feature_extraction::internal;
-    namespace own_np = Sharp_feature_extraction::internal_np;
-    static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
-                                     own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::growth_radius_t,
-                                     CGAL::internal_np::degree_fitting_t,
-                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::callback_t>(),
+    static_assert(sfe::holds_only_completion_parameters<NamedParameters>(),
                   "complete_feature_polylines: a parameter of another stage");
     sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np, m_completion_parameters));
   }
@@ -580,10 +563,7 @@ public:
                             const NamedParameters& np = parameters::default_values()) const
   {
     namespace sfe = Sharp_feature_extraction::internal;
-    static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
-                                     CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                     CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
-                                     CGAL::internal_np::number_of_relaxation_steps_t>(),
+    static_assert(sfe::holds_only_patch_parameters<NamedParameters>(),
                   "segment_into_patches: a parameter of another stage");
     sfe::Working_patches working;
     patches = Surface_patches<GeomTraits>();

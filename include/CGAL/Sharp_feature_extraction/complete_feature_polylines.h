@@ -65,12 +65,7 @@ void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
                                 const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  namespace own_np = Sharp_feature_extraction::internal_np;
-  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
-                                   own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::growth_radius_t,
-                                   CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
-                                   CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
-                                   CGAL::internal_np::callback_t>(),
+  static_assert(sfe::holds_only_completion_parameters<NamedParameters>(),
                 "complete_feature_polylines: a parameter of another stage");
   sfe::complete_feature_curve_network(network, np, sfe::read_completion_parameters(np));
 }

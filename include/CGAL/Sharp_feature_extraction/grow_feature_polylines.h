@@ -50,12 +50,7 @@ bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features,
                             const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  namespace own_np = Sharp_feature_extraction::internal_np;
-  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
-                                   own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::completion_distance_t,
-                                   CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
-                                   CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
-                                   CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+  static_assert(sfe::holds_only_growing_parameters<NamedParameters>(),
                 "grow_feature_polylines: a parameter of another stage");
   return sfe::grow_feature_curve_network(features, network, np, sfe::read_callback(np));
 }

@@ -109,12 +109,8 @@ bool rmls_project_candidates(
   const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  namespace own_np = Sharp_feature_extraction::internal_np;
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  static_assert(sfe::holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::growth_radius_t,
-                                   own_np::completion_distance_t, CGAL::internal_np::threshold_distance_t,
-                                   CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
-                                   CGAL::internal_np::number_of_relaxation_steps_t>(),
+  static_assert(sfe::holds_only_projection_parameters<NamedParameters>(),
                 "rmls_project_candidates: a parameter of another stage");
   const Sharp_feature_extraction_context<GT, ConcurrencyTag> context(points, candidates.scales, np);
   return context.rmls_project_candidates(candidates, projected, np);

@@ -63,10 +63,7 @@ bool segment_into_patches(const PointRange& points, const Feature_curve_network<
                           const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
-                                   CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                   CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
-                                   CGAL::internal_np::number_of_relaxation_steps_t>(),
+  static_assert(sfe::holds_only_patch_parameters<NamedParameters>(),
                 "segment_into_patches: a parameter of another stage");
   const Sharp_feature_extraction_context<GeomTraits, ConcurrencyTag> context(points, network.scales, np);
   return context.segment_into_patches(network, patches);

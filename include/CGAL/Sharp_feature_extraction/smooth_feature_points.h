@@ -48,9 +48,7 @@ bool smooth_feature_points(Feature_point_set<GeomTraits>& features,
                            const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  static_assert(sfe::holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
-                                   CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
-                                   CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>(),
+  static_assert(sfe::holds_only_smoothing_parameters<NamedParameters>(),
                 "smooth_feature_points: a parameter of another stage");
   return sfe::smooth_feature_point_set<ConcurrencyTag>(features, sfe::read_smoothing_parameters(np),
                                                        sfe::read_callback(np));

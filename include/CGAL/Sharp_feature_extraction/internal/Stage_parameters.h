@@ -207,6 +207,63 @@ constexpr bool holds_none_of()
   return (CGAL::parameters::is_default_parameter<NamedParameters, Tags>::value && ...);
 }
 
+/// Whether `NamedParameters` holds only parameters of stage 2 (its own scales included): the
+/// check of `rmls_project_candidates()`, the free function and the member alike.
+template <typename NamedParameters>
+constexpr bool holds_only_projection_parameters()
+{
+  namespace own_np = CGAL::Sharp_feature_extraction::internal_np;
+  return holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::growth_radius_t,
+                       own_np::completion_distance_t, CGAL::internal_np::threshold_distance_t,
+                       CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                       CGAL::internal_np::number_of_relaxation_steps_t>();
+}
+
+/// Whether `NamedParameters` holds only parameters of stage 3.
+template <typename NamedParameters>
+constexpr bool holds_only_smoothing_parameters()
+{
+  return holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                       CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                       CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>();
+}
+
+/// Whether `NamedParameters` holds only parameters of stage 4 (its growth radius included).
+template <typename NamedParameters>
+constexpr bool holds_only_growing_parameters()
+{
+  namespace own_np = CGAL::Sharp_feature_extraction::internal_np;
+  return holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                       own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::completion_distance_t,
+                       CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
+                       CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
+                       CGAL::internal_np::maximum_angle_t, CGAL::internal_np::number_of_relaxation_steps_t>();
+}
+
+/// Whether `NamedParameters` holds only parameters of stage 5 (its completion distance
+/// included; stage 5 reports no progress, so no callback).
+template <typename NamedParameters>
+constexpr bool holds_only_completion_parameters()
+{
+  namespace own_np = CGAL::Sharp_feature_extraction::internal_np;
+  return holds_none_of<NamedParameters, own_np::candidate_neighbors_t, own_np::rmls_neighbors_t,
+                       own_np::rmls_tolerance_t, own_np::corner_radius_t, own_np::growth_radius_t,
+                       CGAL::internal_np::degree_fitting_t, CGAL::internal_np::threshold_distance_t,
+                       CGAL::internal_np::sharpness_angle_t, CGAL::internal_np::number_of_iterations_t,
+                       CGAL::internal_np::callback_t>();
+}
+
+/// Whether `NamedParameters` holds no parameter of the five stages nor a scale: what the
+/// segmentation into patches accepts besides the points' own (point map, traits, callback).
+template <typename NamedParameters>
+constexpr bool holds_only_patch_parameters()
+{
+  return holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                       CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                       CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                       CGAL::internal_np::number_of_relaxation_steps_t>();
+}
+
 } // namespace internal
 } // namespace Sharp_feature_extraction
 } // namespace CGAL
