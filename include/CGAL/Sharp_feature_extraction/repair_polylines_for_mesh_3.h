@@ -6,7 +6,7 @@
 
 #include <CGAL/Sharp_feature_extraction/Mesh_3_polyline_repair_report.h>
 #include <CGAL/Sharp_feature_extraction/find_mesh_3_polyline_problems.h>
-#include <CGAL/Sharp_feature_extraction/internal/mesh_polyline_repair_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_repair.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>

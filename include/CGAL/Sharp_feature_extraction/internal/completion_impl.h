@@ -10,6 +10,7 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Feature_data.h>
 #include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
+#include <CGAL/Sharp_feature_extraction/internal/Mesh_3_ready_network.h>
 #include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_contract.h>
 #include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
 #include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
@@ -691,6 +692,27 @@ private:
     }
   }
 
+  // A corner moved by `place_corners()` can leave the curve's last vertices turning sharply to
+  // reach it (the vertex before the corner lay on the noisy side of the averaged lines): such a
+  // vertex goes, so that the curve runs straight to its corner instead of making a sharp turn
+  // that Mesh_3 would round off (and that the Mesh_3 step would split into a one-segment curve).
+  void drop_sharp_end_vertices(Working_polyline& c) const
+  {
+    const double cos_turn = std::cos(radians(Constants::sharp_turn_angle));
+    auto turns_sharply = [&](std::size_t v) {
+      const Vec3 a = c.points[v] - c.points[v - 1], b = c.points[v + 1] - c.points[v];
+      return a.norm() > 0 && b.norm() > 0 && a.normalized().dot(b.normalized()) < cos_turn;
+    };
+    auto erase_vertex = [&](std::size_t v) {
+      c.points.erase(c.points.begin() + std::ptrdiff_t(v));
+      c.normals.erase(c.normals.begin() + std::ptrdiff_t(v));
+    };
+    while(c.front_corner != no_index && c.points.size() > 2 && turns_sharply(1))
+      erase_vertex(1);
+    while(c.back_corner != no_index && c.points.size() > 2 && turns_sharply(c.points.size() - 2))
+      erase_vertex(c.points.size() - 2);
+  }
+
   // Exact shared points, consistent normals. (Loops without a corner are exact already: every
   // step that moves a vertex moves their first and last together.)
   void finalize()
@@ -701,6 +723,7 @@ private:
         c.points.front() = m_net.corners[c.front_corner].point;
       if(c.back_corner != no_index)
         c.points.back() = m_net.corners[c.back_corner].point;
+      drop_sharp_end_vertices(c);
       for(std::size_t v = 1; v < c.normals.size(); ++v)
         c.normals[v] = align_normal_pair(c.normals[v - 1], c.normals[v]);
     }
@@ -711,6 +734,7 @@ private:
 inline void complete_polylines(Working_network& network, const Completion_parameters& parameters)
 {
   Curve_completion(network, parameters).run();
+  make_network_mesh_3_ready(network);
   index_incident_polylines(network);
 }
 

@@ -8,7 +8,7 @@
 
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
 #include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_contract.h>
-#include <CGAL/Sharp_feature_extraction/internal/mesh_polyline_repair_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_repair.h>
 
 #include <CGAL/Kernel_traits.h>
 

@@ -3,7 +3,7 @@
 //
 // The pipeline of `reconstruct_surface_with_sharp_features()`:
 //   1. the scales of the feature network set every size;
-//   2. repair of the polylines for Mesh_3 (mesh_polyline_repair_impl.h), then their interior
+//   2. repair of the polylines for Mesh_3 (Mesh_polyline_repair.h), then their interior
 //      vertices moved onto the crease of the two surfaces fitted on either side (Crease_model.h);
 //   3. normals: jet estimation, orientation along the sheets of the surface
 //      (orient_normals_along_sheets.h), then, near the polylines, the normal of the point's own
@@ -21,7 +21,7 @@
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
 #include <CGAL/Sharp_feature_extraction/Surface_reconstruction_report.h>
 #include <CGAL/Sharp_feature_extraction/find_mesh_3_polyline_problems.h>
-#include <CGAL/Sharp_feature_extraction/internal/mesh_polyline_repair_impl.h>
+#include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_repair.h>
 #include <CGAL/Sharp_feature_extraction/internal/reconstruction/Crease_model.h>
 #include <CGAL/Sharp_feature_extraction/internal/reconstruction/mesh_implicit_surface.h>
 #include <CGAL/Sharp_feature_extraction/internal/reconstruction/orient_normals_along_sheets.h>

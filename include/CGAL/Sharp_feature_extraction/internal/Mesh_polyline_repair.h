@@ -4,12 +4,11 @@
 // The repair of `repair_polylines_for_mesh_3()`, on feature polylines (their normals follow
 // their points): the steps that make polylines meet the contract of Mesh_polyline_contract.h.
 
-#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_IMPL_H
-#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_IMPL_H
+#ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_H
+#define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_H
 
 #include <CGAL/Sharp_feature_extraction/Mesh_3_polyline_repair_report.h>
 #include <CGAL/Sharp_feature_extraction/Sharp_features.h>
-#include <CGAL/Sharp_feature_extraction/find_mesh_3_polyline_problems.h>
 #include <CGAL/Sharp_feature_extraction/internal/Mesh_polyline_contract.h>
 #include <CGAL/Sharp_feature_extraction/internal/Spatial_grid.h>
 
@@ -320,6 +319,17 @@ std::vector<Close_run> find_close_runs(const std::vector<Curve>& curves, double 
   return runs;
 }
 
+/// removes the curves marked in `dropped`, keeping the others in order.
+template <typename Curve>
+void erase_marked(std::vector<Curve>& curves, const std::vector<bool>& dropped)
+{
+  std::vector<Curve> kept;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(!dropped[c])
+      kept.push_back(std::move(curves[c]));
+  curves = std::move(kept);
+}
+
 /// Two curves running closer than the tolerance for more than a few tolerances are one crease
 /// found twice: the shorter goes.
 template <typename Curve, typename Point_3>
@@ -336,11 +346,7 @@ void drop_parallel_duplicates(std::vector<Curve>& curves, double tol, Mesh_3_pol
     dropped[shorter] = true;
     ++report.dropped_duplicates;
   }
-  std::vector<Curve> kept;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(!dropped[c])
-      kept.push_back(std::move(curves[c]));
-  curves = std::move(kept);
+  erase_marked(curves, dropped);
 }
 
 /// A curve lying mostly (see `covered_fraction`) within the tolerance of one longer curve is that
@@ -384,11 +390,7 @@ void drop_covered_curves(std::vector<Curve>& curves, double tol, Mesh_3_polyline
         break;
       }
   }
-  std::vector<Curve> kept;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(!dropped[c])
-      kept.push_back(std::move(curves[c]));
-  curves = std::move(kept);
+  erase_marked(curves, dropped);
 }
 
 /// Interior vertices of two curves (or of one curve, far apart along it) closer than the
@@ -442,7 +444,7 @@ void drop_polylines_in_contact(std::vector<Feature_polyline<GeomTraits>>& curves
                                     double tolerance, Mesh_3_polyline_repair_report& report)
 {
   typedef Feature_polyline<GeomTraits> Curve;
-    std::vector<bool> dropped(curves.size(), false);
+  std::vector<bool> dropped(curves.size(), false);
   for(const Unshared_contact& contact :
       find_unshared_contacts<Curve, typename GeomTraits::Point_3>(curves, tolerance)) {
     if(dropped[contact.a] || dropped[contact.b])
@@ -451,11 +453,7 @@ void drop_polylines_in_contact(std::vector<Feature_polyline<GeomTraits>>& curves
     ++report.dropped_in_contact;
   }
   report.output_polylines -= std::count(dropped.begin(), dropped.end(), true);
-  std::vector<Curve> kept;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(!dropped[c])
-      kept.push_back(std::move(curves[c]));
-  curves = std::move(kept);
+  erase_marked(curves, dropped);
 }
 
 /// removes the non-finite and repeated points, and the normals that do not match the points;
@@ -565,4 +563,4 @@ Mesh_3_polyline_repair_report repair_feature_polylines(std::vector<Feature_polyl
 } // namespace Sharp_feature_extraction
 } // namespace CGAL
 
-#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_IMPL_H
+#endif // CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_MESH_POLYLINE_REPAIR_H
