@@ -7,14 +7,19 @@
 #
 #   scripts/bench_meshing.sh [--build DIR] [--parts "fandisk anchor joint part"]
 #                            [--noises "0 0.005"] [--seeds "1 2 3 4 5"] [--points 100000]
-#                            [--true-curves] [--work DIR] [--time-limit SEC] [--resume]
+#                            [--true-curves] [--work DIR] [--time-limit SEC] [--resume] [--report]
 #
 # --seeds: one independently drawn cloud per seed and case (the sampler's seed), so that a
 # failure on one draw of the same part and noise cannot hide behind a lucky one. The table has
 # one row per run and a summary per part, noise and run over the seeds (valid count, medians).
 #
+# Exit status 2 when a run did not give a valid mesh (closed, manifold, free of self-intersections,
+# Mesh_3 not stopped): each is named on stderr after the report is written.
+#
 # --resume keeps the clouds and runs already in the work directory (an interrupted benchmark, or
 # more parts added to a finished one) and runs only the missing ones; the report covers all.
+# --report runs nothing: it writes the report of the runs already in the work directory (a run
+# not there is reported as failed).
 #
 # --true-curves adds a third run per case, protecting the true creases instead of the
 # extracted ones (the best the meshing can do with perfect curves). When the library's
@@ -32,6 +37,7 @@ true_curves=0
 time_limit=1800
 work=""
 resume=0
+report_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --build) build="$2"; shift 2 ;;
@@ -43,7 +49,8 @@ while [ $# -gt 0 ]; do
     --work) work="$2"; shift 2 ;;
     --time-limit) time_limit="$2"; shift 2 ;;
     --resume) resume=1; shift ;;
-    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+    --report) report_only=1; resume=1; shift ;;
+    -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     *) echo "bench_meshing.sh: unknown argument $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -96,6 +103,7 @@ run_case() { # part noise seed variant -> stats + measures in $work/<part>_<nois
   esac
   # .status is written last: a run interrupted before it is run again
   [ "$resume" = 1 ] && [ -f "$base.status" ] && return 0
+  [ "$report_only" = 1 ] && return 0
   rm -f "$base.off" "$base.stats" "$base.measure" "$base.status"
   echo "  $part noise $noise seed $seed: $variant" >&2
   local status=0
@@ -112,6 +120,12 @@ run_case() { # part noise seed variant -> stats + measures in $work/<part>_<nois
   echo "$status" > "$base.status"
 }
 
+# a run gave a closed, manifold, self-intersection free mesh and Mesh_3 was not stopped
+valid_run() { # base
+  [ -f "$1.measure" ] && [ "$(value closed "$1.measure")" = 1 ] && [ "$(value manifold "$1.measure")" = 1 ] &&
+    [ "$(value self_intersecting "$1.measure")" = 0 ] && [ "$(value stopped "$1.stats")" = 0 ]
+}
+
 row() { # part noise seed variant
   local base="$work/${1}_${2}_s${3}_${4}" m s
   m="$base.measure"; s="$base.stats"
@@ -120,7 +134,7 @@ row() { # part noise seed variant
     return
   fi
   local valid="yes"
-  [ "$(value closed "$m")" = 1 ] && [ "$(value manifold "$m")" = 1 ] && [ "$(value self_intersecting "$m")" = 0 ] || valid="NO"
+  valid_run "$base" || valid="NO"
   [ "$(value stopped "$s")" = 1 ] && valid="NO (stopped)"
   awk -v part="$1" -v noise="$2" -v seed="$3" -v variant="$4" -v valid="$valid" \
       -v tri="$(value triangles "$m")" -v mean="$(value mean_distance "$m")" -v max="$(value max_distance "$m")" \
@@ -143,9 +157,7 @@ summary_row() { # part noise variant
   for seed in $seeds; do
     base="$work/${1}_${2}_s${seed}_${3}"
     total=$((total + 1))
-    [ -f "$base.measure" ] || continue
-    [ "$(value closed "$base.measure")" = 1 ] && [ "$(value manifold "$base.measure")" = 1 ] &&
-      [ "$(value self_intersecting "$base.measure")" = 0 ] && [ "$(value stopped "$base.stats")" = 0 ] || continue
+    valid_run "$base" || continue
     valid=$((valid + 1))
     times="$times $(value seconds_total "$base.stats")"
     bands="$bands $(value band_mean_distance "$base.measure")"
@@ -162,7 +174,7 @@ for part in $parts; do
   "$measure" --truth "$data/$part.off" --render "$results/${part}_truth"
   for noise in $noises; do
     for seed in $seeds; do
-      [ "$resume" = 1 ] && [ -f "$work/${part}_${noise}_s${seed}.xyz" ] ||
+      [ "$resume" = 1 ] && { [ -f "$work/${part}_${noise}_s${seed}.xyz" ] || [ "$report_only" = 1 ]; } ||
       "$measure" --truth "$data/$part.off" --sample-to "$work/${part}_${noise}_s${seed}.xyz" --points "$points" \
                  --noise "$noise" --seed "$seed"
       for variant in $variants; do
@@ -253,3 +265,15 @@ done
   done
 } > "$results/MESHING.md"
 echo "wrote $results/MESHING.md" >&2
+
+# every run must give a valid mesh: an invalid one fails the benchmark, so that it cannot regress silently
+invalid=0
+for c in "${cases[@]}"; do
+  read -r part noise seed variant <<< "$c"
+  valid_run "$work/${part}_${noise}_s${seed}_${variant}" || {
+    invalid=$((invalid + 1))
+    echo "bench_meshing.sh: invalid: $part noise $noise seed $seed $variant" >&2
+  }
+done
+echo "bench_meshing.sh: $((${#cases[@]} - invalid)) of ${#cases[@]} runs valid" >&2
+[ "$invalid" = 0 ] || exit 2

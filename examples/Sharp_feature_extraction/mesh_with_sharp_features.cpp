@@ -225,7 +225,8 @@ void write_summary(std::ostream& out, std::size_t points, const CGAL::Surface_re
     out << "curves: " << r.repair.summary() << "; " << r.protected_polylines.size() << " protected ("
         << r.protected_vertices << " protected vertices), " << r.projected_onto_creases
         << " curve vertices moved onto the fitted creases, " << r.moved_onto_surface << " onto the surface, "
-        << r.cut_off_surface << " curves cut off the surface\n";
+        << r.cut_off_surface << " curves cut off the surface, " << r.cut_near_other_sheet
+        << " near another sheet of it\n";
   for(const auto& problem : r.remaining_polyline_problems)
     out << "  curve problem left: " << problem.description << "\n";
   out << "normals: " << r.corrected_normals << " corrected near creases, " << r.unoriented_points
@@ -244,6 +245,7 @@ void write_stats(const std::string& path, std::size_t points, const CGAL::Surfac
         << "\nfacet_distance=" << r.facet_distance << "\nfar_field=" << r.far_field
         << "\nfeatures=" << (features ? 1 : 0) << "\ncurves_in=" << r.repair.input_polylines
         << "\ncurves_protected=" << r.protected_polylines.size() << "\ncurves_cut_off_surface=" << r.cut_off_surface
+        << "\ncurves_cut_near_other_sheet=" << r.cut_near_other_sheet
         << "\ncurve_vertices_moved_onto_surface=" << r.moved_onto_surface
         << "\ncurve_problems=" << r.remaining_polyline_problems.size()
         << "\ncorrected_normals=" << r.corrected_normals << "\ntriangles=" << check.triangles

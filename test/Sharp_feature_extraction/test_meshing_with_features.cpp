@@ -133,6 +133,20 @@ Meshed reconstruct(const Box_cloud& cloud, const CGAL::Feature_curve_network<K>&
   return m;
 }
 
+/// the tolerances of the curve projection as the reconstruction sets them, for a spacing s and
+/// an edge size of 3 s
+rc::Polyline_projection_settings projection_settings(double s)
+{
+  rc::Polyline_projection_settings settings;
+  settings.gradient_step = 0.05 * s;
+  settings.maximal_move = 2 * s;
+  settings.clearance = 3 * s;
+  settings.clearance_step = 0.25 * s;
+  settings.cut_margin = 3 * s;
+  settings.minimum_length = 3 * s;
+  return settings;
+}
+
 } // namespace
 
 TEST_CASE("the crease model's part of the implicit function is continuous along a crease on a noisy "
@@ -257,7 +271,7 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
 {
   // the unit sphere as a signed distance; two arcs along the equator, vertices s/2 apart
   auto sphere = [](const Point_3& x) { return std::sqrt((x - CGAL::ORIGIN).squared_length()) - 1; };
-  const double s = 0.01, max_move = 2 * s, margin = 3 * s, minimum_length = 3 * s;
+  const double s = 0.01;
   const int steps = 60;
   const double step_angle = 0.5 * s;
   Curve near_surface, with_far_vertex;
@@ -271,10 +285,12 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
     with_far_vertex.points.push_back(Point_3(r_far * std::cos(a), r_far * std::sin(a), 1e-3));
   }
   std::vector<Curve> curves = {near_surface, with_far_vertex};
-  std::size_t moved = 0, cut = 0;
-  rc::project_polylines_onto_surface<K>(curves, sphere, 0.05 * s, max_move, margin, minimum_length, moved, cut);
-  CHECK(cut == 1);
-  CHECK(moved > std::size_t(steps));
+  const rc::Polyline_projection_settings settings = projection_settings(s);
+  rc::Polyline_projection_counts counts;
+  rc::project_polylines_onto_surface<K>(curves, sphere, settings, counts);
+  CHECK(counts.cut_off_surface == 1);
+  CHECK(counts.cut_near_other_sheet == 0);
+  CHECK(counts.moved_onto_surface > std::size_t(steps));
   REQUIRE(curves.size() == 3);
   CHECK(curves[0].points.size() == near_surface.points.size());
   for(const Curve& c : curves)
@@ -284,8 +300,64 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
   const Point_3 far_vertex = with_far_vertex.points[steps / 2];
   for(std::size_t piece = 1; piece < 3; ++piece) {
     for(const Point_3& p : curves[piece].points)
-      CHECK(std::sqrt(CGAL::squared_distance(p, far_vertex)) > margin);
-    CHECK(curves[piece].points.size() >= std::size_t(steps / 2 - 2 * margin / s));
+      CHECK(std::sqrt(CGAL::squared_distance(p, far_vertex)) > settings.cut_margin);
+    CHECK(curves[piece].points.size() >= std::size_t(steps / 2 - 2 * settings.cut_margin / s));
+  }
+}
+
+TEST_CASE("a curve on a wall or across a gap narrower than the clearance (Mesh_3's protecting balls "
+          "would reach the other side, and it would refine there without end) is dropped, and one on a "
+          "wall or across a gap wider than twice the clearance is kept whole",
+          "[meshing]")
+{
+  const double s = 0.01;
+  const rc::Polyline_projection_settings settings = projection_settings(s);
+  for(const double width : {2 * s, 8 * s})
+    for(const bool wall : {true, false}) {
+      // a slab |z| < width / 2 (a wall), or the space between two half-spaces (a gap); the curve
+      // runs on the face z = width / 2
+      auto function = [width, wall](const Point_3& x) {
+        return (wall ? 1 : -1) * (std::abs(x.z()) - width / 2);
+      };
+      Curve curve;
+      for(double x = 0; x <= 0.3; x += 0.5 * s)
+        curve.points.push_back(Point_3(x, 0, width / 2));
+      std::vector<Curve> curves = {curve};
+      rc::Polyline_projection_counts counts;
+      rc::project_polylines_onto_surface<K>(curves, function, settings, counts);
+      INFO((wall ? "wall " : "gap ") << width / s << " s wide");
+      const bool narrow = width < settings.clearance;
+      CHECK(counts.cut_near_other_sheet == (narrow ? 1u : 0u));
+      CHECK(curves.size() == (narrow ? 0u : 1u));
+      if(!narrow)
+        CHECK(curves.front().points.size() == curve.points.size());
+    }
+}
+
+TEST_CASE("Mesh_3 stopped while it refines the facets, before it labels the cells inside (the time "
+          "limit stopped it there on rotor, 25k points, 0.5% noise, seed 4), gives its partial surface "
+          "facing outward: no facet is oriented by the infinite vertex, whose point is not a point",
+          "[meshing]")
+{
+  // a unit sphere as a signed distance, meshed far finer than the vertex limit allows; away from
+  // the origin, where the infinite vertex's unset point may be, so that a facet oriented by it
+  // faces the wrong way if its point is not a NaN
+  const Point_3 center(2, 1, 0.5);
+  auto sphere = [&center](const Point_3& x) { return std::sqrt((x - center).squared_length()) - 1; };
+  rc::Mesh_sizes sizes;
+  sizes.facet_size = sizes.edge_size = 0.05;
+  sizes.facet_distance = 0.005;
+  rc::Surface_meshing_limits limits;
+  // a few times Mesh_3's initial points: the facets of the convex hull are still on the surface
+  limits.maximal_number_of_vertices = 100;
+  const rc::Surface_meshing_result<Point_3> result =
+    rc::mesh_implicit_surface<K>(sphere, K::Sphere_3(center, 4), std::vector<std::vector<Point_3>>(), sizes, limits);
+  CHECK(result.stopped);
+  REQUIRE_FALSE(result.surface.triangles.empty());
+  for(const auto& t : result.surface.triangles) {
+    const std::vector<Point_3>& p = result.surface.points;
+    const K::Vector_3 normal = CGAL::cross_product(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
+    CHECK(normal * (CGAL::centroid(p[t[0]], p[t[1]], p[t[2]]) - center) > 0);
   }
 }
 

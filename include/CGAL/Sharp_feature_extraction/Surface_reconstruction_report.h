@@ -55,6 +55,10 @@ struct Surface_reconstruction_report
   std::size_t moved_onto_surface = 0;
   /// Polylines cut where a vertex had no point of the implicit surface near it.
   std::size_t cut_off_surface = 0;
+  /// Polylines cut where the implicit surface had another sheet within a protecting ball of a
+  /// vertex (a wall thinner than the ball, or a gap narrower than it): Mesh_3 cannot protect
+  /// them there.
+  std::size_t cut_near_other_sheet = 0;
   /// Polyline vertices moved onto the crease of the two surfaces fitted on either side.
   std::size_t projected_onto_creases = 0;
   /// What is still wrong with the protected polylines (empty when all is well).

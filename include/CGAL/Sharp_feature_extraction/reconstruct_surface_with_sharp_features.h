@@ -101,7 +101,9 @@ Reconstruction_settings reconstruction_settings(const NamedParameters& np)
 /// near a polyline, a point gets the normal of its own side of the crease, from two quadric
 /// patches fitted on either side; Poisson's implicit function is replaced near the polylines by
 /// the two patches, so that the creases stay sharp; the polyline vertices are moved onto that
-/// function's zero set (a polyline is cut where it is farther than 1.25 spacings from it); Mesh_3
+/// function's zero set (a polyline is cut where it is farther than 1.25 spacings from it, or
+/// where the zero set has another sheet nearer than `edge_size` along the vertex's normal: a
+/// wall or a gap thinner than Mesh_3's protecting balls, whose refinement would not end); Mesh_3
 /// meshes the zero set with the polylines protected, with manifold output.
 ///
 /// Every size is relative to `features.scales.spacing` (the mean distance to the 6th nearest

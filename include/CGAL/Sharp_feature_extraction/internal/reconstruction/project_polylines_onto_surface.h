@@ -22,13 +22,49 @@ namespace Sharp_feature_extraction {
 namespace internal {
 namespace reconstruction {
 
+/// The tolerances of `project_polylines_onto_surface()`, as absolute distances.
+struct Polyline_projection_settings
+{
+  /// Step of the central differences of the gradient of the function.
+  double gradient_step = 0;
+  /// A vertex farther than this from the zero set is off the surface.
+  double maximal_move = 0;
+  /// Another sheet of the zero set nearer than this to a vertex, along its normal, makes the
+  /// vertex unfit for protection.
+  double clearance = 0;
+  /// The step of the search for that sheet.
+  double clearance_step = 0;
+  /// The pieces of a cut curve end this far from the cut.
+  double cut_margin = 0;
+  /// Pieces shorter than this are dropped.
+  double minimum_length = 0;
+};
+
+/// What `project_polylines_onto_surface()` did.
+struct Polyline_projection_counts
+{
+  std::size_t moved_onto_surface = 0;   ///< vertices moved
+  std::size_t cut_off_surface = 0;      ///< curves cut where a vertex was off the surface
+  std::size_t cut_near_other_sheet = 0; ///< curves cut where another sheet was too near a vertex
+};
+
+/// the gradient of `function` at `x` by central differences `h` apart.
+template <typename Function, typename Point_3>
+typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 central_gradient(const Function& function, const Point_3& x,
+                                                                         double h)
+{
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
+  return Vector_3((function(x + Vector_3(h, 0, 0)) - function(x - Vector_3(h, 0, 0))) / (2 * h),
+                  (function(x + Vector_3(0, h, 0)) - function(x - Vector_3(0, h, 0))) / (2 * h),
+                  (function(x + Vector_3(0, 0, h)) - function(x - Vector_3(0, 0, h))) / (2 * h));
+}
+
 /// moves `p` onto the zero set of `function` (a signed distance, up to a factor near 1) by
 /// Newton steps along its gradient, taken by central differences `gradient_step` apart. Returns
 /// false, leaving `p`, when no zero within `max_move` is found.
 template <typename Function, typename Point_3>
 bool project_onto_zero_set(const Function& function, Point_3& p, double gradient_step, double max_move)
 {
-  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
   // converged: a hundredth of the gradient step, far below any facet distance
   const double tolerance = 1e-2 * gradient_step;
   const int maximal_steps = 20;
@@ -41,11 +77,7 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
       p = x;
       return true;
     }
-    const double h = gradient_step;
-    const Vector_3 gradient(
-      (function(x + Vector_3(h, 0, 0)) - function(x - Vector_3(h, 0, 0))) / (2 * h),
-      (function(x + Vector_3(0, h, 0)) - function(x - Vector_3(0, h, 0))) / (2 * h),
-      (function(x + Vector_3(0, 0, h)) - function(x - Vector_3(0, 0, h))) / (2 * h));
+    const auto gradient = central_gradient(function, x, gradient_step);
     const double squared_norm = CGAL::to_double(gradient.squared_length());
     if(!(squared_norm > 0))
       return false;
@@ -56,53 +88,78 @@ bool project_onto_zero_set(const Function& function, Point_3& p, double gradient
   return false;
 }
 
+/// whether the zero set of `function` has no other sheet than the one through `p` (a point of
+/// it) within `settings.clearance` of `p` along its normal: inward, the far side of a wall
+/// (where the function turns positive again), outward, the near side of a gap (where it turns
+/// negative), searched `settings.clearance_step` apart.
+template <typename Function, typename Point_3>
+bool is_clear_of_other_sheets(const Function& function, const Point_3& p, const Polyline_projection_settings& settings)
+{
+  const auto gradient = central_gradient(function, p, settings.gradient_step);
+  const double norm = std::sqrt(CGAL::to_double(gradient.squared_length()));
+  if(!(norm > 0))
+    return false;
+  const auto normal = gradient / norm;
+  for(double t = settings.clearance_step; t < settings.clearance; t += settings.clearance_step)
+    if(function(p - t * normal) > 0 || function(p + t * normal) < 0)
+      return false;
+  return true;
+}
+
 /// Mesh_3 makes every protected vertex a mesh vertex and refines the surface around it until
 /// the facets are within the facet distance of the surface: a protected vertex off the implicit
 /// surface can never be reached, and the refinement shrinks towards it without end. So every
 /// vertex of `curves` is moved onto the zero set of `function` (leaving the vertices within
 /// half the facet distance where they were still let Mesh_3 converge onto a point: anchor,
-/// 25k points, noise 0, seed 2). Where a vertex has no zero
-/// within `max_move`, the curve does not lie on the surface (a spurious curve, or a corner the
-/// surface rounds off): the curve is cut there, the pieces on either side shortened by
-/// `cut_margin` (so that their new ends stay clear of the other curves meeting at that point),
-/// and pieces shorter than `minimum_length` are dropped. Shared points stay shared: the
-/// projection is a function of the point alone.
+/// 25k points, noise 0, seed 2). Mesh_3 covers the vertices with protecting balls that must
+/// meet no other sheet of the surface; where one does (a curve along a wall thinner than a
+/// ball), Mesh_3 shrinks the balls and refines the facets between them without end. Where a
+/// vertex has no zero within `maximal_move`, or another sheet within `clearance` (see
+/// `is_clear_of_other_sheets()`), the curve is not protectable there (a spurious curve, a
+/// corner the surface rounds off, a thin wall): the curve is cut there, the pieces on either
+/// side shortened by `cut_margin` (so that their new ends stay clear of the other curves
+/// meeting at that point, and of the thin wall), and pieces shorter than `minimum_length` are
+/// dropped. Shared points stay shared: the projection is a function of the point alone.
 template <typename GeomTraits, typename Function>
-void project_polylines_onto_surface(std::vector<Feature_polyline<GeomTraits>>& curves,
-                                         const Function& function, double gradient_step,
-                                         double max_move, double cut_margin, double minimum_length,
-                                         std::size_t& moved_onto_surface, std::size_t& cut_off_surface)
+void project_polylines_onto_surface(std::vector<Feature_polyline<GeomTraits>>& curves, const Function& function,
+                                    const Polyline_projection_settings& settings, Polyline_projection_counts& counts)
 {
   typedef Feature_polyline<GeomTraits> Curve;
   using namespace mesh_polylines;
   std::vector<Curve> kept;
   for(Curve& c : curves) {
     const std::size_t n = c.points.size();
-    std::vector<bool> on_surface(n);
+    std::vector<bool> protectable(n);
+    bool off_surface = false, near_other_sheet = false;
     for(std::size_t i = 0; i < n; ++i) {
       const auto before = c.points[i];
-      on_surface[i] = project_onto_zero_set(function, c.points[i], gradient_step, max_move);
-      moved_onto_surface += (on_surface[i] && c.points[i] != before) ? 1 : 0;
+      const bool on_surface = project_onto_zero_set(function, c.points[i], settings.gradient_step,
+                                                    settings.maximal_move);
+      counts.moved_onto_surface += (on_surface && c.points[i] != before) ? 1 : 0;
+      protectable[i] = on_surface && is_clear_of_other_sheets(function, c.points[i], settings);
+      off_surface = off_surface || !on_surface;
+      near_other_sheet = near_other_sheet || (on_surface && !protectable[i]);
     }
-    if(std::find(on_surface.begin(), on_surface.end(), false) == on_surface.end()) {
+    if(!off_surface && !near_other_sheet) {
       kept.push_back(std::move(c));
       continue;
     }
-    ++cut_off_surface;
+    counts.cut_off_surface += off_surface ? 1 : 0;
+    counts.cut_near_other_sheet += near_other_sheet ? 1 : 0;
     const std::vector<double> arc = arc_lengths(c);
     auto near_cut = [&](std::size_t i, std::size_t cut) {
-      return point_distance(c.points[i], c.points[cut]) < cut_margin;
+      return point_distance(c.points[i], c.points[cut]) < settings.cut_margin;
     };
     for(std::size_t begin = 0; begin < n;) {
-      if(!on_surface[begin]) {
+      if(!protectable[begin]) {
         ++begin;
         continue;
       }
       std::size_t end = begin;
-      while(end < n && on_surface[end])
+      while(end < n && protectable[end])
         ++end;
-      // [first, last): the run [begin, end) without its vertices within `cut_margin` of a
-      // vertex off the surface
+      // [first, last): the run [begin, end) without its vertices within `cut_margin` of an
+      // unprotectable vertex
       std::size_t first = begin, last = end;
       if(begin > 0)
         while(first < end && near_cut(first, begin - 1))
@@ -110,7 +167,7 @@ void project_polylines_onto_surface(std::vector<Feature_polyline<GeomTraits>>& c
       if(end < n)
         while(last > first && near_cut(last - 1, end))
           --last;
-      if(last >= first + 2 && arc[last - 1] - arc[first] >= minimum_length) {
+      if(last >= first + 2 && arc[last - 1] - arc[first] >= settings.minimum_length) {
         std::vector<std::size_t> cuts;
         if(first > 0)
           cuts.push_back(first);

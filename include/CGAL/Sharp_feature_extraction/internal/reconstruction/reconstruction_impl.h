@@ -37,6 +37,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,15 @@ struct Reconstruction_constants
   /// Step of the central differences of that projection: small against every feature of the
   /// surface, large against the solver's noise.
   static constexpr double surface_projection_step = 0.05;
+  /// A curve is cut where the implicit surface has another sheet nearer than this many edge
+  /// sizes to a vertex (along its normal). Mesh_3's protecting balls have radii up to the edge
+  /// size, and a ball that reaches another sheet makes Mesh_3 shrink the balls and refine the
+  /// facets between them without end: rotor, 25k points, 0.5% noise, seeds 4 and 5, curves
+  /// along walls about 2 s thick with an edge size of 3 s, shortest mesh edges 3e-5 and 2e-9.
+  static constexpr double clearance_per_edge_size = 1;
+  /// The step of the search for that sheet: a quarter of s, a wall thinner than that between
+  /// two samples being no wall the sampling resolves.
+  static constexpr double clearance_step = 0.25;
   /// Mesh_3 is stopped when its triangulation holds more vertices than this many per input
   /// point. A mesh finer than the sampling is not supported by the data: the refinement is
   /// running away (a valid benchmark mesh needs about 0.35 vertices per point), and the limit
@@ -202,6 +212,21 @@ oriented_normals(const std::vector<typename GeomTraits::Point_3>& points, Progre
   return pwn;
 }
 
+/// the two sides of every crease of `creases` facing outward, and each crease convex or concave,
+/// as the oriented normals `pwn` say.
+template <typename GeomTraits>
+void orient_crease_model(Crease_model<GeomTraits>& creases,
+                         const std::vector<Point_with_normal<typename GeomTraits::Point_3>>& pwn)
+{
+  std::vector<typename GeomTraits::Point_3> oriented_points;
+  std::vector<typename GeomTraits::Vector_3> oriented_normals;
+  for(const auto& p : pwn) {
+    oriented_points.push_back(p.first);
+    oriented_normals.push_back(p.second);
+  }
+  creases.orient(oriented_points, oriented_normals);
+}
+
 /// the polylines onto the crease of the fitted patches (ends stay: they may be shared), and the
 /// normals near them replaced by the normals of their own side.
 template <typename GeomTraits>
@@ -226,13 +251,7 @@ void use_crease_model(Crease_model<GeomTraits>& creases, std::vector<Feature_pol
       p.second = (n * p.second < 0) ? -n : n;
       ++report.corrected_normals;
     }
-  std::vector<Point_3> oriented_points;
-  std::vector<Vector_3> oriented_normals;
-  for(const auto& p : pwn) {
-    oriented_points.push_back(p.first);
-    oriented_normals.push_back(p.second);
-  }
-  creases.orient(oriented_points, oriented_normals);
+  orient_crease_model(creases, pwn);
 }
 
 /// Mesh_3's domain: a sphere around the cloud (its bounding cube, in fact). Mesh_3 finds its
@@ -274,17 +293,27 @@ bounding_sphere(const std::vector<typename GeomTraits::Point_3>& points, const F
   return typename GeomTraits::Sphere_3(center, radius * radius);
 }
 
-/// the protected vertices onto the surface Mesh_3 will mesh; a moved vertex may come too close
-/// to another polyline, which is then dropped.
+/// the protected vertices onto the surface Mesh_3 will mesh, the curves cut where they are off
+/// it or too near another sheet of it; a moved vertex may come too close to another polyline,
+/// which is then dropped.
 template <typename GeomTraits, typename Function>
 void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curves, const Function& function,
                                  double s, Surface_reconstruction_report<GeomTraits>& report)
 {
   typedef Reconstruction_constants C;
   const std::size_t before = curves.size();
-  project_polylines_onto_surface(curves, function, C::surface_projection_step * s, C::maximal_move_onto_surface * s,
-                                 C::cut_margin * s, C::minimum_polyline_length * s, report.moved_onto_surface,
-                                 report.cut_off_surface);
+  Polyline_projection_settings projection;
+  projection.gradient_step = C::surface_projection_step * s;
+  projection.maximal_move = C::maximal_move_onto_surface * s;
+  projection.clearance = C::clearance_per_edge_size * report.edge_size;
+  projection.clearance_step = C::clearance_step * s;
+  projection.cut_margin = C::cut_margin * s;
+  projection.minimum_length = C::minimum_polyline_length * s;
+  Polyline_projection_counts counts;
+  project_polylines_onto_surface(curves, function, projection, counts);
+  report.moved_onto_surface += counts.moved_onto_surface;
+  report.cut_off_surface += counts.cut_off_surface;
+  report.cut_near_other_sheet += counts.cut_near_other_sheet;
   report.repair.output_polylines = report.repair.output_polylines + curves.size() - before;
   mesh_polylines::drop_polylines_in_contact(curves, C::repair_tolerance * s, report.repair);
 }
@@ -383,8 +412,20 @@ reconstruct(const std::vector<typename GeomTraits::Point_3>& points, const Featu
   function.base = &poisson;
   function.creases = settings.sharpen_creases ? &creases : nullptr;
   function.base_scale = 1. / gradient_norm(poisson, pwn, s);
-  if(settings.protect_polylines)
+  // Where a curve is cut, Mesh_3 no longer protects it, and the function must not stay sharp
+  // there: an unprotected crease meeting the end of a protected curve made Mesh_3 refine without
+  // end (pinion, 25k points, noise 0, seed 1: shortest edge 2e-11). So the creases are fitted
+  // again to the protected curves, and these are moved onto the new function.
+  std::unique_ptr<Crease_model<GeomTraits>> protected_creases;
+  if(settings.protect_polylines) {
     prepare_protected_polylines(curves, function, s, report);
+    if(settings.sharpen_creases && report.cut_off_surface + report.cut_near_other_sheet > 0) {
+      protected_creases.reset(new Crease_model<GeomTraits>(curves, points, Crease_model_options::for_spacing(s)));
+      orient_crease_model(*protected_creases, pwn);
+      function.creases = protected_creases.get();
+      prepare_protected_polylines(curves, function, s, report);
+    }
+  }
   report.remaining_polyline_problems =
     mesh_polylines::find_contract_violations(curves, mesh_polylines::Contract_tolerances{repair.tolerance});
   const typename GeomTraits::Sphere_3 bound = bounding_sphere<GeomTraits>(points, function, pwn, s);
