@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Sharp_feature_extraction authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The Python module `sharp_features`: `CGAL::extract_sharp_features()` on a NumPy array.
+// The extension `sharp_features._sharp_features`, which the package `sharp_features` re-exports:
+// `CGAL::extract_sharp_features()` on a NumPy array.
 //
 // The points are read in place (a C-contiguous float64 array is wrapped by a point map over its
 // buffer, other arrays are converted once), the computation runs without the GIL, and the
@@ -468,7 +469,7 @@ std::string result_repr(const Result& r)
 
 } // namespace
 
-PYBIND11_MODULE(sharp_features, m)
+PYBIND11_MODULE(_sharp_features, m)
 {
   m.doc() = docstrings::module;
   m.attr("__version__") = SFE_VERSION;
