@@ -97,9 +97,13 @@ struct LAS_header
   /// Byte offset of the first point record from the start of the file.
   std::uint64_t offset_to_points = 0;
   /// A coordinate is `integer * scale + offset`, per axis x, y, z.
-  std::array<double, 3> scale{}, offset{};
-  /// Bounding box as the header states it (not checked against the points).
-  std::array<double, 3> min{}, max{};
+  std::array<double, 3> scale{};
+  /// See `scale`.
+  std::array<double, 3> offset{};
+  /// Lower corner of the bounding box as the header states it (not checked against the points).
+  std::array<double, 3> min{};
+  /// Upper corner of the bounding box as the header states it.
+  std::array<double, 3> max{};
 };
 
 /// \ingroup PkgSharpFeatureExtractionIORef

@@ -64,6 +64,8 @@ struct LAS_write_options
 /// back within half a scale step of the one written (about 1e-9 of the extent).
 /// \tparam PointRange a range of points with `x()`, `y()` and `z()`.
 /// \param os the stream, opened with `std::ios::binary`.
+/// \param points the points, written in their order.
+/// \param options the version, point format and sizes of the file.
 /// \throws std::invalid_argument if the options are not a valid layout (version, format,
 ///   record or VLR size) or a coordinate is not finite.
 /// \returns `true` if the stream is good after writing.
@@ -161,6 +163,9 @@ bool write_LAS_points(std::ostream& os, const PointRange& points, const LAS_writ
 
 /// \ingroup PkgSharpFeatureExtractionIORef
 /// Same, into the file `filename`.
+/// \param filename the file, created or overwritten.
+/// \param points the points, written in their order.
+/// \param options the version, point format and sizes of the file.
 /// \returns `false` if the file cannot be written.
 template <typename PointRange>
 bool write_LAS_points(const std::string& filename, const PointRange& points, const LAS_write_options& options = {})
