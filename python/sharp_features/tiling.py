@@ -35,15 +35,25 @@ CHUNK_POINTS = 1 << 20
 # Binning tasks per worker: two let a worker start its second range while the slowest first
 # range still runs, without cutting the file into ranges too small to amortise a task.
 BINNING_TASKS_PER_WORKER = 2
-# The grid's box is widened by this fraction of its largest extent on each side, so that
-# points on its upper faces fall inside the last tiles rather than on their outer boundary.
-GRID_MARGIN = 1e-9
+# The keywords of python3 -m sharp_features that each tiled function takes (the others refuse
+# the rest): the scales are estimated once, the tiles run stages 1 to 3, the stitching stage 5.
+SCALE_KEYWORDS = {"candidate_neighbors", "rmls_neighbors", "threshold_distance", "rmls_tolerance", "corner_radius",
+                  "growth_radius", "completion_distance", "degree_fitting", "threads"}
+HALO_KEYWORDS = {"number_of_iterations"}
+TILE_KEYWORDS = {"degree_fitting", "sharpness_angle", "number_of_iterations", "threads"}
+STITCH_KEYWORDS = {"maximum_angle", "number_of_relaxation_steps"}
+
+
+def keywords_among(parameters, accepted):
+    return {k: v for k, v in parameters.items() if k in accepted}
 
 
 @dataclasses.dataclass(frozen=True)
 class TileGrid:
-    """A grid of `counts` tiles, of `size` each, from `low`: tile (i, j, k) has the core box
-    [low + (i, j, k) * size, low + (i + 1, j + 1, k + 1) * size]. Tiles are numbered
+    """A grid of `counts` tiles, of `size` each, from `low`: tile (i, j, k) has the half-open
+    core box [low + (i, j, k) * size, low + (i + 1, j + 1, k + 1) * size), whose faces on the
+    border of the grid are pushed to infinity (as extract_tiled's are), so that every point has
+    a tile even where a LAS header's bounds are too small. Tiles are numbered
     i + counts[0] * (j + counts[1] * k)."""
 
     low: tuple
@@ -56,13 +66,12 @@ class TileGrid:
         that is the longest is halved (in count, doubled) until there are enough, so that
         tiles stay close to cubes whatever the shape of the box."""
         low, high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
-        margin = GRID_MARGIN * max(float(np.max(high - low)), 1.0)
-        low, high = low - margin, high + margin
         counts = [1, 1, 1]
         while math.prod(counts) < tiles:
             axis = max(range(3), key=lambda a: (high[a] - low[a]) / counts[a])
             counts[axis] += 1
-        size = (high - low) / counts
+        # An axis without extent (a planar cloud) has one tile, of any size: its faces are infinite.
+        size = np.where(high > low, (high - low) / counts, 1.0)
         return cls(tuple(low.tolist()), tuple(size.tolist()), tuple(counts))
 
     @property
@@ -82,12 +91,12 @@ class TileGrid:
         return self._flat(self._cells(points))
 
     def core_box(self, tile):
-        """(box_min, box_max) of the core of `tile`, as lists of three floats."""
-        i = tile % self.counts[0]
-        j = (tile // self.counts[0]) % self.counts[1]
-        k = tile // (self.counts[0] * self.counts[1])
-        box_min = [self.low[a] + c * self.size[a] for a, c in enumerate((i, j, k))]
-        box_max = [self.low[a] + (c + 1) * self.size[a] for a, c in enumerate((i, j, k))]
+        """(box_min, box_max) of the core of `tile`, as lists of three floats (infinite on the
+        border of the grid)."""
+        cell = (tile % self.counts[0], (tile // self.counts[0]) % self.counts[1], tile // (self.counts[0] * self.counts[1]))
+        box_min = [-math.inf if c == 0 else self.low[a] + c * self.size[a] for a, c in enumerate(cell)]
+        box_max = [math.inf if c + 1 == self.counts[a] else self.low[a] + (c + 1) * self.size[a]
+                   for a, c in enumerate(cell)]
         return box_min, box_max
 
     def halo_tiles(self, points, halo):
@@ -142,15 +151,11 @@ def read_tile_files(directory):
 
 def bin_range(source, first, count, grid, work_dir, part):
     """Binning task: appends points `first` to `first + count` of `source` to the files of
-    their tiles, `work_dir/core_T/part_<part>.f64`. Returns (per-tile point counts, per-tile
-    (low, high) of the points written, TaskReport)."""
+    their tiles, `work_dir/core_T/part_<part>.f64`. Returns (per-tile point counts, TaskReport)."""
     reader = _point_files.PointReader(source)
     if first:
         reader.seek(first)
-    tile_count = grid.tile_count
-    counts = np.zeros(tile_count, dtype=np.int64)
-    low = np.full((tile_count, 3), np.inf)
-    high = np.full((tile_count, 3), -np.inf)
+    counts = np.zeros(grid.tile_count, dtype=np.int64)
     remaining = count
     while remaining > 0:
         chunk = reader.read(min(CHUNK_POINTS, remaining))
@@ -164,9 +169,7 @@ def bin_range(source, first, count, grid, work_dir, part):
             points = chunk[rows]
             _append(pathlib.Path(work_dir) / f"core_{tile}" / f"part_{part:06d}.f64", points)
             counts[tile] += len(points)
-            low[tile] = np.minimum(low[tile], points.min(axis=0))
-            high[tile] = np.maximum(high[tile], points.max(axis=0))
-    return counts, low, high, TaskReport.here()
+    return counts, TaskReport.here()
 
 
 def write_halos(tile, grid, halo, work_dir):
@@ -186,7 +189,7 @@ def extract_tile_files(tile, box_min, box_max, scales, work_dir, parameters):
     # The order of the files depends on how the input was cut into binning ranges, hence on the
     # number of workers; sorted, a tile's points are the same array whatever ran the passes.
     points = points[np.lexsort(points.T[::-1])]
-    result = _sharp_features.extract_tile(points, box_min, box_max, scales, **parameters)
+    result = _sharp_features.extract_tile(points, box_min, box_max, scales, **keywords_among(parameters, TILE_KEYWORDS))
     return result, len(points), TaskReport.here()
 
 
@@ -303,18 +306,19 @@ def extract_file_tiled(source, tiles, work_dir, executor, parameters, run):
     started = time.perf_counter()
     largest = int(np.argmax(counts))
     run.largest_tile_points = int(counts[largest])
-    scales = _sharp_features.estimate_scales(read_tile_files(work_dir / f"core_{largest}"), **parameters)
+    scales = _sharp_features.estimate_scales(read_tile_files(work_dir / f"core_{largest}"),
+                                             **keywords_among(parameters, SCALE_KEYWORDS))
     run.seconds["scales"] = time.perf_counter() - started
 
     occupied = [int(t) for t in np.flatnonzero(counts)]
     run.tiles_with_points = len(occupied)
-    spread_halos(grid, occupied, _sharp_features.tile_halo_width(scales), work_dir, executor, run)
-    boxes = [owning_box(grid, t, binned) for t in occupied]
+    spread_halos(grid, occupied, _sharp_features.tile_halo_width(scales, **keywords_among(parameters, HALO_KEYWORDS)),
+                 work_dir, executor, run)
     extracted = run.run_pass(executor, "extraction", extract_tile_files,
-                             [(t, lo, hi, scales, str(work_dir), parameters) for t, (lo, hi) in zip(occupied, boxes)])
+                             [(t, *grid.core_box(t), scales, str(work_dir), parameters) for t in occupied])
 
     started = time.perf_counter()
-    result = _sharp_features.stitch_tiles([e[0] for e in extracted], **parameters)
+    result = _sharp_features.stitch_tiles([e[0] for e in extracted], **keywords_among(parameters, STITCH_KEYWORDS))
     run.seconds["stitching"] = time.perf_counter() - started
     run.peak_memory["client"] = peak_memory_bytes()
     return result
@@ -329,13 +333,3 @@ def _bounds_by_reading(reader):
     if not np.all(low <= high):
         raise ValueError("the file holds no points")
     return low, high
-
-
-def owning_box(grid, tile, binned):
-    """The core box of `tile`, grown to the points binned into it: a tile on the border of the
-    grid also owns the points beyond it (a LAS header's bounds may be too small)."""
-    box_min, box_max = (np.asarray(b) for b in grid.core_box(tile))
-    for _, low, high, _ in binned:
-        if np.all(low[tile] <= high[tile]):
-            box_min, box_max = np.minimum(box_min, low[tile]), np.maximum(box_max, high[tile])
-    return box_min.tolist(), box_max.tolist()

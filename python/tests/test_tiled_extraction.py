@@ -71,9 +71,9 @@ def test_each_point_is_in_its_tile_and_in_the_halo_of_every_tile_whose_grown_box
     contents = tile_contents(tmp_path, occupied)
     assert sum(len(core) for core, _ in contents.values()) == len(points)
     for t, (core, halo) in contents.items():
-        low, high = (np.asarray(b) for b in tiling.owning_box(grid, t, binned))
-        in_core = np.all((points >= low) & (points <= high), axis=1)
-        in_grown = np.all((points >= low - HALO) & (points <= high + HALO), axis=1)
+        low, high = (np.asarray(b) for b in grid.core_box(t))
+        in_core = np.all((points >= low) & (points < high), axis=1)
+        in_grown = np.all((points >= low - HALO) & (points < high + HALO), axis=1)
         assert core == rows(points[in_core])
         assert halo == rows(points[in_grown & ~in_core])
         assert halo, "every tile of the cube has neighbours within the halo"
