@@ -15,6 +15,7 @@ import contextlib
 import dataclasses
 import json
 import logging
+import os
 import pathlib
 import sys
 import tempfile
@@ -56,7 +57,8 @@ def parse_arguments(argv):
                         help=f"at least N tiles (default with a cluster: {TILES_PER_WORKER} per worker)")
     parser.add_argument("--work-dir", type=pathlib.Path,
                         help="directory of the tile files, kept (default: a temporary one beside OUTPUT)")
-    parser.add_argument("--threads", type=int, help="threads per extraction (default: all cores)")
+    parser.add_argument("--threads", type=int,
+                        help="threads per extraction (default: all cores, shared among the workers of --workers)")
     parser.add_argument("--report", type=pathlib.Path, help="also write what was measured as JSON")
     parser.add_argument("--quiet", action="store_true", help="no progress bar and no summary")
     for option, keyword, kind, description in OVERRIDES:
@@ -87,6 +89,9 @@ def extraction_parameters(arguments):
     parameters = {k: v for k, v in parameters.items() if v is not None}
     if arguments.threads is not None:
         parameters["threads"] = arguments.threads
+    elif arguments.workers is not None:
+        # The workers of a LocalCluster share this machine's cores.
+        parameters["threads"] = max(1, (os.cpu_count() or 1) // arguments.workers)
     return parameters
 
 

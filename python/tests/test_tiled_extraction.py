@@ -1,6 +1,7 @@
 """python3 -m sharp_features and its tiled passes (sharp_features.tiling): the binning and
 halo passes put every point in the files of exactly the tiles whose core plus halo contains
-it, in this process and on a dask LocalCluster of 2 worker processes on 127.0.0.1; the
+it; a dask LocalCluster of 2 worker processes on 127.0.0.1 bins the same points and extracts
+the same curves as this process, through the API and through the module's --scheduler; the
 untiled run writes the extract_sharp_features program's curves; bad inputs end the program
 with one line."""
 
@@ -89,6 +90,20 @@ def test_a_cluster_of_two_worker_processes_bins_the_same_points_as_this_process(
     assert len(workers) == 2 and all(str(os.getpid()) not in p for p in workers), "the tasks ran in the workers"
 
 
+def test_two_worker_processes_extract_the_same_curves_as_this_process(cube_las, tmp_path, client, monkeypatch):
+    # Small binning ranges, so that the workers bin the cube in several (in this process: 2 ranges;
+    # on the cluster: 4), and the tile files hold their points in other orders.
+    monkeypatch.setattr(tiling, "CHUNK_POINTS", 1000)
+    here = tiling.extract_file_tiled(cube_las, TILES, tmp_path / "here", tiling.Executor(), {}, tiling.TiledRun())
+    run = tiling.TiledRun()
+    there = tiling.extract_file_tiled(cube_las, TILES, tmp_path / "there", tiling.DaskExecutor(client), {}, run)
+    assert len(list((tmp_path / "there" / "core_0").iterdir())) > len(list((tmp_path / "here" / "core_0").iterdir()))
+    assert len(here.polylines) == 12 and len(here.corners) == 8
+    assert len(there.polylines) == len(here.polylines)
+    assert all(np.array_equal(a, b) for a, b in zip(there.polylines, here.polylines))
+    assert np.array_equal(there.corners, here.corners)
+
+
 def run_module(*arguments):
     return subprocess.run([sys.executable, "-m", "sharp_features", *map(str, arguments)], capture_output=True,
                           text=True, env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
@@ -100,6 +115,17 @@ def test_the_untiled_module_writes_the_programs_curves(cube_las, extract_program
     subprocess.run([extract_program, cube_las, "-o", program, "--quiet"], check=True)
     assert module.read_text() == program.read_text()
     assert len(module.read_text().splitlines()) == 12
+
+
+def test_the_module_on_a_scheduler_writes_the_curves_of_the_module_tiled_in_process(cube_las, client, tmp_path):
+    here, there = tmp_path / "here.polylines.txt", tmp_path / "there.polylines.txt"
+    assert run_module(cube_las, "-o", here, "--tiles", TILES, "--quiet").returncode == 0
+    done = run_module(cube_las, "-o", there, "--scheduler", client.scheduler.address, "--tiles", TILES,
+                      "--work-dir", tmp_path / "tiles", "--report", tmp_path / "report.json")
+    assert done.returncode == 0, done.stderr
+    assert there.read_text() == here.read_text()
+    assert "tiles             4 with points of 4" in done.stdout
+    assert len(list((tmp_path / "tiles").glob("core_*"))) == TILES, "--work-dir keeps the tile files"
 
 
 @pytest.mark.parametrize("arguments, message", [
