@@ -2,8 +2,11 @@
 # Benchmark of `python3 -m sharp_features` distributed with dask: writes
 # benchmark/results/dask/DASK.md from the runs below (rows in out/bench_dask/*.json).
 #
-#   bash scripts/bench_dask.sh [--scene-points N] [--skip-scene]
+#   bash scripts/bench_dask.sh [--scene-points N] [--skip-scene] [--build DIR]
 #
+# --build: the build directory (default out/build-dask, configured with the Python module and
+# the examples when new); only sample_mesh_surface, extract_sharp_features and sharp_features
+# are built.
 # 1. fandisk, 500,000 points (noise 0), as LAS: the extract_sharp_features program, the module
 #    untiled, tiled in this process (--tiles 4) and on a LocalCluster of 2 worker processes
 #    (--workers 2, 4 tiles); the curves of the last two are compared byte for byte.
@@ -20,11 +23,13 @@ cd "$SFE_ROOT"
 
 scene_points=20000000
 skip_scene=0
+build="$SFE_OUT_DIR/build-dask"
 while [ $# -gt 0 ]; do
   case "$1" in
     --scene-points) scene_points="$2"; shift ;;
     --skip-scene) skip_scene=1 ;;
-    -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+    --build) build="$2"; shift ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) sfe_die "unknown option $1 (see --help)" ;;
   esac
   shift
@@ -37,13 +42,14 @@ parts=(fandisk anchor joint part pinion rotor spool u cross)
 scene_tiles=16
 
 install_missing_packages "${SFE_PACKAGES[@]}" "${SFE_PYTHON_PACKAGES[@]}" time
-build="$SFE_OUT_DIR/build-dask"
 work="$SFE_OUT_DIR/bench_dask"
 results="$SFE_ROOT/benchmark/results/dask"
 mkdir -p "$work" "$results"
 sfe_log "building into $build"
-cmake -S "$SFE_ROOT" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=OFF \
-  -DSFE_BUILD_BENCHMARK=OFF -DSFE_BUILD_MESHING=OFF -DSFE_BUILD_PYTHON=ON -DPython_EXECUTABLE="$SFE_PYTHON" > /dev/null
+# An existing build directory keeps its options (it must have the Python module and the examples).
+[ -f "$build/CMakeCache.txt" ] ||
+  cmake -S "$SFE_ROOT" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=OFF \
+    -DSFE_BUILD_BENCHMARK=OFF -DSFE_BUILD_MESHING=OFF -DSFE_BUILD_PYTHON=ON -DPython_EXECUTABLE="$SFE_PYTHON" > /dev/null
 cmake --build "$build" -j "$SFE_JOBS" --target sample_mesh_surface extract_sharp_features sharp_features
 bin="$build/examples/Sharp_feature_extraction"
 export PYTHONPATH="$build/python" PYTHONDONTWRITEBYTECODE=1

@@ -152,7 +152,8 @@ def summary(result, report, seconds):
              f"corners           {len(result.corners)}"]
     if "tiles" in report:
         lines.append(f"tiles             {report['tiles_with_points']} with points of {report['tiles']}, "
-                     f"halo {report['halo_width']:.6g}, largest {report['largest_tile_points']} points")
+                     f"halo {report['halo_width']:.6g} (tiles read {report['extracted_points']} points), "
+                     f"largest {report['largest_tile_points']} points")
         lines.append("time [s]          " + ", ".join(f"{k} {v:.2f}" for k, v in report["seconds"].items()))
         memory = ", ".join(f"{k} {v / 2**20:.0f}" for k, v in sorted(report["peak_memory"].items()))
         lines.append(f"peak memory [MB]  {memory}")

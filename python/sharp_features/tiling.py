@@ -120,15 +120,18 @@ def peak_memory_bytes():
 
 @dataclasses.dataclass
 class TaskReport:
-    """What every task returns besides its result: which process ran it, and that process's
-    peak memory so far."""
+    """What every task returns besides its result: which process ran it, that process's peak
+    memory so far, and the CPU time of the task (all its threads): unlike the wall time, it
+    does not grow when other jobs share the machine."""
 
     process: str
     peak_memory: int
+    cpu_seconds: float
 
     @classmethod
-    def here(cls):
-        return cls(f"{os.uname().nodename}:{os.getpid()}", peak_memory_bytes())
+    def here(cls, cpu_started):
+        """The report of a task that started when time.process_time() was `cpu_started`."""
+        return cls(f"{os.uname().nodename}:{os.getpid()}", peak_memory_bytes(), time.process_time() - cpu_started)
 
 
 def _append(path, points):
@@ -152,6 +155,7 @@ def read_tile_files(directory):
 def bin_range(source, first, count, grid, work_dir, part):
     """Binning task: appends points `first` to `first + count` of `source` to the files of
     their tiles, `work_dir/core_T/part_<part>.f64`. Returns (per-tile point counts, TaskReport)."""
+    cpu_started = time.process_time()
     reader = _point_files.PointReader(source)
     if first:
         reader.seek(first)
@@ -169,28 +173,30 @@ def bin_range(source, first, count, grid, work_dir, part):
             points = chunk[rows]
             _append(pathlib.Path(work_dir) / f"core_{tile}" / f"part_{part:06d}.f64", points)
             counts[tile] += len(points)
-    return counts, TaskReport.here()
+    return counts, TaskReport.here(cpu_started)
 
 
 def write_halos(tile, grid, halo, work_dir):
     """Halo task: appends every point of `tile`'s core that another tile needs (within `halo`
     of its core box) to `work_dir/halo_<other>/from_<tile>.f64`. Returns TaskReport."""
+    cpu_started = time.process_time()
     points = read_tile_files(pathlib.Path(work_dir) / f"core_{tile}")
     for rows, other in grid.halo_tiles(points, halo):
         _append(pathlib.Path(work_dir) / f"halo_{other}" / f"from_{tile:06d}.f64", points[rows])
-    return TaskReport.here()
+    return TaskReport.here(cpu_started)
 
 
 def extract_tile_files(tile, box_min, box_max, scales, work_dir, parameters):
     """Extraction task: `extract_tile` on the core and halo points of `tile`. Returns
     (TileResult, number of points read, TaskReport)."""
+    cpu_started = time.process_time()
     work_dir = pathlib.Path(work_dir)
     points = np.concatenate([read_tile_files(work_dir / f"core_{tile}"), read_tile_files(work_dir / f"halo_{tile}")])
     # The order of the files depends on how the input was cut into binning ranges, hence on the
     # number of workers; sorted, a tile's points are the same array whatever ran the passes.
     points = points[np.lexsort(points.T[::-1])]
     result = _sharp_features.extract_tile(points, box_min, box_max, scales, **keywords_among(parameters, TILE_KEYWORDS))
-    return result, len(points), TaskReport.here()
+    return result, len(points), TaskReport.here(cpu_started)
 
 
 class Executor:
@@ -233,7 +239,10 @@ class TiledRun:
     tiles_with_points: int = 0
     halo_width: float = 0.0
     largest_tile_points: int = 0
-    seconds: dict = dataclasses.field(default_factory=dict)
+    # Points the extraction tasks read, halos included: above `points` by the halos' share.
+    extracted_points: int = 0
+    seconds: dict = dataclasses.field(default_factory=dict)  # pass -> wall seconds
+    cpu_seconds: dict = dataclasses.field(default_factory=dict)  # pass -> CPU seconds of its tasks
     peak_memory: dict = dataclasses.field(default_factory=dict)  # process -> bytes
 
     # Makes a context manager with an `update()` method, called once per finished task, from
@@ -246,9 +255,10 @@ class TiledRun:
         with (self.progress_bar or no_progress_bar)(name, len(arguments)) as bar:
             results = executor.map(function, arguments, bar.update)
         self.seconds[name] = time.perf_counter() - started
-        for r in results:
-            report = r if isinstance(r, TaskReport) else r[-1]
-            self.peak_memory[report.process] = max(self.peak_memory.get(report.process, 0), report.peak_memory)
+        reports = [r if isinstance(r, TaskReport) else r[-1] for r in results]
+        self.cpu_seconds[name] = sum(r.cpu_seconds for r in reports)
+        for r in reports:
+            self.peak_memory[r.process] = max(self.peak_memory.get(r.process, 0), r.peak_memory)
         return results
 
 
@@ -303,12 +313,13 @@ def extract_file_tiled(source, tiles, work_dir, executor, parameters, run):
     grid, binned = bin_file(source, tiles, work_dir, executor, run)
     counts = sum(b[0] for b in binned)
 
-    started = time.perf_counter()
+    started, cpu_started = time.perf_counter(), time.process_time()
     largest = int(np.argmax(counts))
     run.largest_tile_points = int(counts[largest])
     scales = _sharp_features.estimate_scales(read_tile_files(work_dir / f"core_{largest}"),
                                              **keywords_among(parameters, SCALE_KEYWORDS))
-    run.seconds["scales"] = time.perf_counter() - started
+    run.seconds["scales"], run.cpu_seconds["scales"] = time.perf_counter() - started, time.process_time() - cpu_started
+    run.peak_memory["client after the scales"] = peak_memory_bytes()
 
     occupied = [int(t) for t in np.flatnonzero(counts)]
     run.tiles_with_points = len(occupied)
@@ -316,10 +327,12 @@ def extract_file_tiled(source, tiles, work_dir, executor, parameters, run):
                  work_dir, executor, run)
     extracted = run.run_pass(executor, "extraction", extract_tile_files,
                              [(t, *grid.core_box(t), scales, str(work_dir), parameters) for t in occupied])
+    run.extracted_points = sum(e[1] for e in extracted)
 
-    started = time.perf_counter()
+    started, cpu_started = time.perf_counter(), time.process_time()
     result = _sharp_features.stitch_tiles([e[0] for e in extracted], **keywords_among(parameters, STITCH_KEYWORDS))
     run.seconds["stitching"] = time.perf_counter() - started
+    run.cpu_seconds["stitching"] = time.process_time() - cpu_started
     run.peak_memory["client"] = peak_memory_bytes()
     return result
 

@@ -37,25 +37,39 @@ def load(work, name):
 
 
 def worker_memory(run):
-    peaks = [v for k, v in run.get("peak_memory", {}).items() if k != "client"]
+    peaks = [v for k, v in run.get("peak_memory", {}).items() if not k.startswith("client")]
     return " / ".join(f"{v / MB:.0f}" for v in sorted(peaks)) if peaks else "-"
 
 
 def table(work):
-    lines = ["| run | points | tiles (with points / grid) | wall (s) | " + " | ".join(PASSES) +
+    lines = ["| run | points | tiles (with points / grid) | points read by the tiles | wall (s) | " + " | ".join(PASSES) +
              " | peak RSS per worker (MB) | client peak RSS (MB) | wall us per point | load at start |",
-             "|---" * (10 + len(PASSES)) + "|"]
-    points = None
+             "|---" * (9 + len(PASSES)) + "|"]
     for name, title in RUNS:
         run = load(work, name)
         if run is None:
             continue
-        points = run.get("points", points)
+        # The program writes no report: its input is that of the module's untiled run.
+        points = run.get("points") or load(work, name.split("_")[0] + "_untiled")["points"]
         tiles = f"{run['tiles_with_points']} / {run['tiles']}" if "tiles" in run else "-"
+        read = f"{run['extracted_points'] / points:.2f} x" if run.get("extracted_points") else "-"
         seconds = [f"{run['seconds'][p]:.2f}" if p in run.get("seconds", {}) else "-" for p in PASSES]
-        lines.append(f"| {title} | {points:,} | {tiles} | {run['wall']:.1f} | " + " | ".join(seconds) +
+        lines.append(f"| {title} | {points:,} | {tiles} | {read} | {run['wall']:.1f} | " + " | ".join(seconds) +
                      f" | {worker_memory(run)} | {run['client_rss'] / MB:.0f} | {1e6 * run['wall'] / points:.2f} | "
                      f"{run['load']} |")
+    return lines
+
+
+def cpu_table(work):
+    lines = ["| run | " + " | ".join(PASSES[1:]) + " | client peak RSS after the scales (MB) |",
+             "|---" * (len(PASSES) + 1) + "|"]
+    for name, title in RUNS:
+        run = load(work, name)
+        if run is None or "cpu_seconds" not in run:
+            continue
+        seconds = [f"{run['cpu_seconds'][p]:.2f}" for p in PASSES[1:]]
+        after_scales = run["peak_memory"].get("client after the scales", 0) / MB
+        lines.append(f"| {title} | " + " | ".join(seconds) + f" | {after_scales:.0f} |")
     return lines
 
 
@@ -68,18 +82,19 @@ def same_curves(work, a, b):
 
 
 def extrapolation(run):
-    """Time of TARGET_POINTS on N machines from one run's per-point costs: the three passes
-    over the points run on every worker at once (worker-seconds per point measured on this
-    run), the stitching runs on the client (seconds per point), the scales once (seconds)."""
-    points, workers = run["points"], run["workers"]
-    parallel = sum(run["seconds"][p] for p in ("binning", "halos", "extraction")) * workers / points
-    serial = run["seconds"]["stitching"] / points
-    fixed = run["seconds"]["scales"] + run["seconds"]["bounds"]
-    lines = [f"Per-point cost measured on this run ({points:,} points, {workers} workers): "
-             f"{1e6 * parallel:.2f} worker-us per point in the binning, halo and extraction passes, "
-             f"{1e6 * serial:.3f} us per point of stitching on the client, {fixed:.1f} s for the bounds and the "
-             f"scales (one tile, whatever the size of the cloud).", "",
-             f"| machines ({WORKERS_PER_MACHINE} workers each) | passes (h) | stitching (h) | total (h) |",
+    """Time of TARGET_POINTS on N machines from one run's per-point CPU costs, which the other
+    jobs on this machine do not inflate: the three passes over the points run on every core
+    at once (CPU seconds per point of their tasks), the stitching on the client's one core
+    (CPU seconds per point), the scales once (CPU seconds, on one tile whatever the cloud)."""
+    points = run["points"]
+    parallel = sum(run["cpu_seconds"][p] for p in ("binning", "halos", "extraction")) / points
+    serial = run["cpu_seconds"]["stitching"] / points
+    fixed = run["cpu_seconds"]["scales"]
+    lines = [f"Per-point CPU cost measured on this run ({points:,} points): "
+             f"{1e6 * parallel:.2f} us per point in the binning, halo and extraction passes, "
+             f"{1e6 * serial:.3f} us per point of stitching on the client, {fixed:.1f} s for the scales.", "",
+             f"| machines ({WORKERS_PER_MACHINE} cores, {WORKERS_PER_MACHINE} workers each) | passes (h) | "
+             "stitching (h) | total (h) |",
              "|---|---|---|---|"]
     for machines in MACHINES:
         passes = TARGET_POINTS * parallel / (machines * WORKERS_PER_MACHINE) / 3600
@@ -95,13 +110,16 @@ def main():
              "written by our writer; noise 0. Machine: 2 cores shared with other jobs (the load average at the start of "
              "each run is given: above 0 means contention).", "",
              *table(work), "",
+             "CPU seconds of each pass (all the tasks' threads, summed over the workers; the client's for the scales "
+             "and the stitching): what the passes cost whatever else runs on the machine.", "",
+             *cpu_table(work), "",
              "Wall: the whole process, imports and the cluster's start included (/usr/bin/time). Pass times: the "
              "module's own (--report). Peak RSS per worker: getrusage in each worker process after its last task. "
              "Client: the process that reads nothing but the most populated tile (scales) and the tiles' results.", "",
              f"Curves, tiled in process vs 2 workers: {same_curves(work, 'fandisk_tiled', 'fandisk_workers')}; "
              f"module untiled vs the program: {same_curves(work, 'fandisk_untiled', 'fandisk_program')}.", ""]
     best = load(work, "scene_workers") or load(work, "fandisk_workers")
-    if best is not None:
+    if best is not None and "cpu_seconds" in best:
         lines += [f"## Extrapolation to {TARGET_POINTS:.0e} points", "", *extrapolation(best), "",
                   "Assumes the tiles stay the size measured here (so each worker's peak memory stays as above), "
                   "a file system shared by all machines that keeps up (binning reads the LAS once and writes 24 bytes "
