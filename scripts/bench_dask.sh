@@ -9,7 +9,8 @@
 # are built.
 # 1. fandisk, 500,000 points (noise 0), as LAS: the extract_sharp_features program, the module
 #    untiled, tiled in this process (--tiles 4) and on a LocalCluster of 2 worker processes
-#    (--workers 2, 4 tiles); the curves of the last two are compared byte for byte.
+#    (--workers 2, 4 tiles; also 2 and 8 tiles); the curves of 4 tiles in process and on the
+#    workers are compared byte for byte.
 # 2. a synthetic CAD-like scene of N points (default 20,000,000; make_scene.py: a grid of
 #    rotated copies of the nine sample parts at 250,000 points each, as LAS) on 2 workers with
 #    --tiles 16. --skip-scene leaves it out (it takes minutes and about 2 GB of disk).
@@ -78,6 +79,11 @@ run fandisk_tiled "${module[@]}" "$fandisk.las" -o "$work/fandisk_tiled.txt" --t
   --report "$work/fandisk_tiled.json"
 run fandisk_workers "${module[@]}" "$fandisk.las" -o "$work/fandisk_workers.txt" --workers 2 --tiles 4 \
   --report "$work/fandisk_workers.json"
+# Other tile counts: the halos' share against the size of a tile.
+for tiles in 2 8; do
+  run "fandisk_workers_${tiles}_tiles" "${module[@]}" "$fandisk.las" -o "$work/fandisk_workers_${tiles}_tiles.txt" \
+    --workers 2 --tiles "$tiles" --report "$work/fandisk_workers_${tiles}_tiles.json"
+done
 
 if [ "$skip_scene" = 0 ]; then
   scene="$work/scene_${scene_points}.las"
