@@ -104,6 +104,17 @@ def test_two_worker_processes_extract_the_same_curves_as_this_process(cube_las, 
     assert np.array_equal(there.corners, here.corners)
 
 
+def test_a_binary_ply_input_is_streamed_and_tiled(cube, tmp_path):
+    path = tmp_path / "cube.ply"
+    header = f"ply\nformat binary_little_endian 1.0\nelement vertex {len(cube)}\n" \
+             "property double x\nproperty double y\nproperty double z\nend_header\n"
+    path.write_bytes(header.encode() + cube.astype("<f8").tobytes())
+    run = tiling.TiledRun()
+    result = tiling.extract_file_tiled(path, TILES, tmp_path / "tiles", tiling.Executor(), {}, run)
+    assert (run.points, run.tiles) == (len(cube), TILES)
+    assert (len(result.polylines), len(result.corners)) == (12, 8)
+
+
 def run_module(*arguments):
     return subprocess.run([sys.executable, "-m", "sharp_features", *map(str, arguments)], capture_output=True,
                           text=True, env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
