@@ -23,19 +23,32 @@ def sorted_curves(result):
     return sorted(tuple(sorted(map(tuple, p))) for p in result.polylines)
 
 
-@pytest.fixture(scope="module")
-def scales(cube):
-    return sharp_features.estimate_scales(cube)
+# Noise on the test cube, in its units: on exact planes a tile without its halo would fit the same
+# planes as the whole cloud, and these tests would not see a missing halo.
+NOISE = 0.002
+NOISE_SEED = 2
 
 
 @pytest.fixture(scope="module")
-def untiled(cube, scales):
-    return sharp_features.extract(cube, threshold_distance=scales["residual_threshold"])
+def noisy_cube(cube):
+    return cube + np.random.default_rng(NOISE_SEED).uniform(-NOISE, NOISE, size=cube.shape)
 
 
-def slabs(points, scales, count):
-    """The cube cut into `count` slabs along x, each extracted with its halo and pickled."""
-    halo = sharp_features.tile_halo_width(scales)
+@pytest.fixture(scope="module")
+def scales(noisy_cube):
+    return sharp_features.estimate_scales(noisy_cube)
+
+
+@pytest.fixture(scope="module")
+def untiled(noisy_cube, scales):
+    return sharp_features.extract(noisy_cube, threshold_distance=scales["residual_threshold"])
+
+
+def slabs(points, scales, count, halo=None):
+    """The cube cut into `count` slabs along x, each extracted with `halo` (default: the tile
+    halo width) and pickled."""
+    if halo is None:
+        halo = sharp_features.tile_halo_width(scales)
     cuts = np.concatenate(([-np.inf], np.linspace(-0.5, 0.5, count + 1)[1:-1], [np.inf]))
     tiles = []
     for low, high in zip(cuts[:-1], cuts[1:]):
@@ -51,8 +64,8 @@ def test_the_scales_carry_the_tiled_threshold(scales):
     assert sharp_features.tile_halo_width(scales, number_of_iterations=0) < sharp_features.tile_halo_width(scales)
 
 
-def test_pickled_tiles_stitch_into_the_untiled_curves_in_any_order(cube, scales, untiled):
-    tiles = slabs(cube, scales, 3)
+def test_pickled_tiles_stitch_into_the_untiled_curves_in_any_order(noisy_cube, scales, untiled):
+    tiles = slabs(noisy_cube, scales, 3)
     assert sum(len(t.state["edge_points"]) for t in tiles) > 0
     forward = sharp_features.stitch_tiles(tiles)
     backward = sharp_features.stitch_tiles(tiles[::-1])
@@ -61,8 +74,12 @@ def test_pickled_tiles_stitch_into_the_untiled_curves_in_any_order(cube, scales,
     assert len(forward.polylines) == 12 and forward.corners.shape == (8, 3)
 
 
-def test_extract_tiled_gives_the_untiled_curves(cube, untiled):
-    tiled = sharp_features.extract_tiled(cube, tiles=8, threads=1)
+def test_without_the_halo_the_stitched_curves_differ(noisy_cube, scales, untiled):
+    assert sorted_curves(sharp_features.stitch_tiles(slabs(noisy_cube, scales, 3, halo=0))) != sorted_curves(untiled)
+
+
+def test_extract_tiled_gives_the_untiled_curves(noisy_cube, untiled):
+    tiled = sharp_features.extract_tiled(noisy_cube, tiles=8, threads=1)
     assert sorted_curves(tiled) == sorted_curves(untiled)
     assert tiled.patches.shape == (0,)
 
