@@ -21,16 +21,19 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 using namespace sfe_test;
-namespace sfe = CGAL::Sharp_feature_extraction::parameters;
+namespace sfe_parameters = CGAL::Sharp_feature_extraction::parameters;
 
 /// A bar with one chamfered long edge, 6 long: 15 creases, 10 corners; the tiles cut it across.
 constexpr double bar_length = 6;
 /// Points on the bar: a spacing of about 0.03, a halo of about a fifth of the bar.
 constexpr std::size_t bar_points = 40000;
+/// Noise, relative to the bar's diagonal: on exact planes a tile without a halo would fit the
+/// same planes as the whole cloud, and the test would not see a missing halo.
+constexpr double bar_noise = 0.0005;
 /// Tiles across the bar: 1.5 long each, less than the halo on each side.
 constexpr std::size_t bar_tiles = 4;
-/// The bar's creases: 5 along it, 5 around each end.
-constexpr std::size_t bar_creases = 15;
+/// Fraction of the creases' length the curves must cover (within 4 spacings).
+constexpr double covered_fraction = 0.99;
 
 Shape chamfered_bar()
 {
@@ -39,7 +42,7 @@ Shape chamfered_bar()
 
 struct Bar
 {
-  std::vector<Point> points = to_points<Point>(sample(chamfered_bar(), bar_points, 0));
+  std::vector<Point> points = to_points<Point>(sample(chamfered_bar(), bar_points, bar_noise));
   CGAL::Sharp_feature_scales<double> scales =
     CGAL::estimate_sharp_feature_scales_for_tiles<CGAL::Parallel_if_available_tag>(points);
   double halo = CGAL::tile_halo_width(scales);
@@ -69,13 +72,14 @@ CGAL::Bbox_3 slab(std::size_t i, std::size_t count)
   return CGAL::Bbox_3(-infinity, y0, -infinity, infinity, y1, infinity);
 }
 
+/// Tile `i` of `count` slabs, with the points within `halo` of its core.
 template <typename ConcurrencyTag>
-CGAL::Tile_features<K> extract_slab(const Bar& b, std::size_t i, std::size_t count)
+CGAL::Tile_features<K> extract_slab(const Bar& b, std::size_t i, std::size_t count, double halo)
 {
   const CGAL::Bbox_3 core = slab(i, count);
   std::vector<Point> points;
   for(const Point& p : b.points)
-    if(p.y() >= core.ymin() - b.halo && p.y() < core.ymax() + b.halo)
+    if(p.y() >= core.ymin() - halo && p.y() < core.ymax() + halo)
       points.push_back(p);
   CGAL::Tile_features<K> tile;
   REQUIRE(CGAL::extract_tile_features<ConcurrencyTag>(points, core, b.scales, tile));
@@ -104,26 +108,32 @@ std::vector<Coordinates> canonical(const CGAL::Feature_polyline<K>& polyline)
   return v;
 }
 
+/// The curves of `network`, each in its own order, sorted.
+std::vector<std::vector<Coordinates>> curve_set(const CGAL::Feature_curve_network<K>& network)
+{
+  std::vector<std::vector<Coordinates>> out;
+  for(const auto& p : network.polylines)
+    out.push_back(canonical(p));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// The corner points of `network`, sorted.
+std::vector<Coordinates> corner_set(const CGAL::Feature_curve_network<K>& network)
+{
+  std::vector<Coordinates> out;
+  for(const auto& c : network.corners)
+    out.push_back({{c.point.x(), c.point.y(), c.point.z()}});
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 /// The same curves and corners, vertex for vertex and bit for bit, whatever their order.
 void check_same_curves(const CGAL::Feature_curve_network<K>& a, const CGAL::Feature_curve_network<K>& b)
 {
-  const auto curves = [](const CGAL::Feature_curve_network<K>& n) {
-    std::vector<std::vector<Coordinates>> out;
-    for(const auto& p : n.polylines)
-      out.push_back(canonical(p));
-    std::sort(out.begin(), out.end());
-    return out;
-  };
-  const auto corners = [](const CGAL::Feature_curve_network<K>& n) {
-    std::vector<Coordinates> out;
-    for(const auto& c : n.corners)
-      out.push_back({{c.point.x(), c.point.y(), c.point.z()}});
-    std::sort(out.begin(), out.end());
-    return out;
-  };
   CHECK(a.polylines.size() == b.polylines.size());
-  CHECK(curves(a) == curves(b));
-  CHECK(corners(a) == corners(b));
+  CHECK(curve_set(a) == curve_set(b));
+  CHECK(corner_set(a) == corner_set(b));
 }
 
 } // namespace
@@ -136,14 +146,14 @@ TEST_CASE("a bar cut into 4 tiles gives the untiled curves to the last bit", "[t
   const CGAL::Sharp_features<K> whole = untiled(b.points, b.scales);
   CGAL::Sharp_features<K> tiled;
   REQUIRE(CGAL::extract_sharp_features_in_tiles<CGAL::Parallel_if_available_tag>(b.points, tiled,
-                                                                                  sfe::number_of_tiles(bar_tiles)));
+                                                                                  sfe_parameters::number_of_tiles(bar_tiles)));
   check_same_curves(whole.network, tiled.network);
   CHECK(tiled.smoothed.edge_points.size() == whole.smoothed.edge_points.size());
   CHECK(mesh_3_contract_violation(tiled.network) == "");
   const Network_errors errors = measure(chamfered_bar(), tiled.network, 4 * b.scales.spacing, b.scales.spacing);
   INFO(errors.summary("tiled", 1.));
-  CHECK(errors.polylines == bar_creases);
-  CHECK(errors.corners == chamfered_bar().corners.size());
+  // Across the tile faces too (the noise, not the tiles, splits a few creases in two).
+  CHECK(errors.coverage > covered_fraction);
 }
 
 TEST_CASE("the stitched curves do not depend on the order of the tiles nor on the threads", "[tiles]")
@@ -152,8 +162,8 @@ TEST_CASE("the stitched curves do not depend on the order of the tiles nor on th
   std::vector<CGAL::Tile_features<K>> sequential, parallel;
   for(std::size_t i = 0; i < bar_tiles; ++i)
   {
-    sequential.push_back(extract_slab<CGAL::Sequential_tag>(b, i, bar_tiles));
-    parallel.push_back(extract_slab<CGAL::Parallel_if_available_tag>(b, i, bar_tiles));
+    sequential.push_back(extract_slab<CGAL::Sequential_tag>(b, i, bar_tiles, b.halo));
+    parallel.push_back(extract_slab<CGAL::Parallel_if_available_tag>(b, i, bar_tiles, b.halo));
   }
   CGAL::Sharp_features<K> forward, reversed, threaded;
   REQUIRE(CGAL::stitch_tile_features(sequential, forward));
@@ -166,13 +176,25 @@ TEST_CASE("the stitched curves do not depend on the order of the tiles nor on th
   check_same_curves(forward.network, untiled(b.points, b.scales).network);
 }
 
+TEST_CASE("without the halo the tiles' curves differ at their faces", "[tiles]")
+{
+  // What the tests above compare can differ: the halo is what makes the tiles exact.
+  const Bar& b = bar();
+  std::vector<CGAL::Tile_features<K>> tiles;
+  for(std::size_t i = 0; i < bar_tiles; ++i)
+    tiles.push_back(extract_slab<CGAL::Sequential_tag>(b, i, bar_tiles, 0.));
+  CGAL::Sharp_features<K> stitched;
+  REQUIRE(CGAL::stitch_tile_features(tiles, stitched));
+  CHECK(curve_set(stitched.network) != curve_set(untiled(b.points, b.scales).network));
+}
+
 TEST_CASE("a loop cut by the tiles is one closed curve", "[tiles]")
 {
   // Two circular creases without a corner, cut in half by the tiles.
   const std::vector<Point> points = to_points<Point>(sample(capped_cylinder(), 20000, 0));
   const auto scales = CGAL::estimate_sharp_feature_scales_for_tiles<CGAL::Parallel_if_available_tag>(points);
   CGAL::Sharp_features<K> tiled;
-  REQUIRE(CGAL::extract_sharp_features_in_tiles<CGAL::Parallel_if_available_tag>(points, tiled, sfe::number_of_tiles(2)));
+  REQUIRE(CGAL::extract_sharp_features_in_tiles<CGAL::Parallel_if_available_tag>(points, tiled, sfe_parameters::number_of_tiles(2)));
   const Network_errors errors = measure(capped_cylinder(), tiled.network, 4 * scales.spacing, scales.spacing);
   INFO(errors.summary("tiled", 1.));
   CHECK(errors.polylines == 2);
@@ -186,11 +208,11 @@ TEST_CASE("bad tiles are rejected with a clear exception", "[tiles][bad input]")
   CGAL::Tile_features<K> tile;
   CHECK_THROWS_AS(CGAL::extract_tile_features<CGAL::Sequential_tag>(b.points, CGAL::Bbox_3(0, 1, 0, 1, 1, 1), b.scales, tile),
                   std::invalid_argument);
-  std::vector<CGAL::Tile_features<K>> tiles = {extract_slab<CGAL::Sequential_tag>(b, 0, 2),
-                                               extract_slab<CGAL::Sequential_tag>(b, 0, 2)};
+  std::vector<CGAL::Tile_features<K>> tiles = {extract_slab<CGAL::Sequential_tag>(b, 0, 2, b.halo),
+                                               extract_slab<CGAL::Sequential_tag>(b, 0, 2, b.halo)};
   CGAL::Sharp_features<K> result;
   CHECK_THROWS_AS(CGAL::stitch_tile_features(tiles, result), std::invalid_argument);
-  tiles[1] = extract_slab<CGAL::Sequential_tag>(b, 1, 2);
+  tiles[1] = extract_slab<CGAL::Sequential_tag>(b, 1, 2, b.halo);
   tiles[1].scales.growth_radius *= 2;
   CHECK_THROWS_AS(CGAL::stitch_tile_features(tiles, result), std::invalid_argument);
 }
