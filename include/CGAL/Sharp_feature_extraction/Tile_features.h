@@ -20,7 +20,9 @@ namespace CGAL {
 /// A feature point belongs to the tile whose core box holds its source, the input point it
 /// was projected from; the boxes are half-open ([min, max) on each axis), so tiles that share
 /// faces own every input point, hence every feature point, exactly once. Given a halo of
-/// `tile_halo_width()` around the core, these points are those the whole cloud would give.
+/// `tile_halo_width()` around the core, these points are those the whole cloud gives with the
+/// same scales and threshold (but for isolated edge points near the faces: see
+/// `tile_halo_width()`).
 template <typename GeomTraits>
 struct Tile_features
 {

@@ -28,7 +28,10 @@ namespace CGAL {
 /// The terms: an edge point lies within its candidate's stage-1 neighbourhood, the surfaces it
 /// is projected on come from a stage-2 neighbourhood (both counted twice their median radius,
 /// for thinner sampling), corner points are grouped over r2, and each smoothing pass reaches the
-/// 60 nearest edge points, measured within 1.1 g (doubled for margin).
+/// 60 nearest edge points, within 1.9 to 2.7 g for 99% of the edge points of CGAL's fandisk,
+/// anchor and pinion. Isolated edge points (far from a crease) reach farther: near a tile face,
+/// such a point may be smoothed with other neighbours than in the whole cloud (6 of 15,697
+/// edge points, by 4% of the spacing, on fandisk with 0.2% noise cut into 27 tiles).
 ///
 /// \param scales the scales of the cloud (see `estimate_sharp_feature_scales_for_tiles()`).
 /// \param np optional named parameters among:
