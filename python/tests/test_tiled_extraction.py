@@ -7,7 +7,6 @@ with one line."""
 
 import logging
 import os
-import pathlib
 import subprocess
 import sys
 
@@ -66,7 +65,7 @@ def test_the_grid_splits_the_longest_side_until_there_are_enough_tiles():
 
 
 def test_each_point_is_in_its_tile_and_in_the_halo_of_every_tile_whose_grown_box_holds_it(cube_las, tmp_path):
-    grid, binned, occupied, run = bin_with_halos(cube_las, tiling.Executor(), tmp_path)
+    grid, _, occupied, run = bin_with_halos(cube_las, tiling.Executor(), tmp_path)
     points = sharp_features.read_point_cloud(cube_las)
     assert run.points == len(points) and grid.tile_count == TILES and len(occupied) == TILES
     contents = tile_contents(tmp_path, occupied)
