@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Sharp_feature_extraction authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The Python module `sharp_features`: `CGAL::extract_sharp_features()` on a NumPy array.
+// The extension `sharp_features._sharp_features`, which the package `sharp_features` re-exports:
+// `CGAL::extract_sharp_features()` on a NumPy array.
 //
 // The points are read in place (a C-contiguous float64 array is wrapped by a point map over its
 // buffer, other arrays are converted once), the computation runs without the GIL, and the
@@ -9,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/extract_sharp_features_in_tiles.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
 #include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
@@ -32,6 +34,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -158,16 +161,27 @@ double read_real(const std::string& name, const py::handle& value)
   return v;
 }
 
-/// The keywords of `extract()` beyond `threads` and `progress`; None keeps the default.
-Extraction_parameters read_parameters(const py::kwargs& keywords)
+/// The keywords of the tiled functions that each reads (the others take all of them).
+namespace keywords_of {
+const std::set<std::string> scales = {"degree_fitting", "threshold_distance", "candidate_neighbors", "rmls_neighbors",
+                                      "rmls_tolerance", "corner_radius", "growth_radius", "completion_distance"};
+const std::set<std::string> halo = {"number_of_iterations"};
+const std::set<std::string> tile = {"degree_fitting", "sharpness_angle", "number_of_iterations"};
+const std::set<std::string> stitch = {"maximum_angle", "number_of_relaxation_steps"};
+} // namespace keywords_of
+
+/// The keywords of `function` beyond `threads` and `progress`, among `accepted` (all of them if
+/// null); None keeps the default.
+Extraction_parameters read_parameters(const py::kwargs& keywords, const std::string& function = "extract",
+                                      const std::set<std::string>* accepted = nullptr)
 {
   Extraction_parameters parameters;
   for(const auto& [key, value] : keywords)
   {
     const std::string name = py::str(key);
     const auto found = parameter_members().find(name);
-    if(found == parameter_members().end())
-      throw py::type_error("extract() got an unexpected keyword argument '" + name + "'");
+    if(found == parameter_members().end() || (accepted != nullptr && accepted->count(name) == 0))
+      throw py::type_error(function + "() got an unexpected keyword argument '" + name + "'");
     if(value.is_none())
       continue;
     std::visit([&](auto member) {
@@ -253,14 +267,11 @@ constexpr double extraction_share_of_progress = 0.9;
 
 /// Runs the extraction on the points of `points`, then the segmentation into surface patches
 /// on the same extraction context; returns false if `callback` stopped it. Needs no GIL.
-bool run_extraction(const Point_array& points, const Extraction_parameters& p,
-                    const std::function<bool(double)>& callback, Features& features,
-                    CGAL::Surface_patches<Kernel>& patches)
+/// The library's named parameters for `p`, reading the points through `point_map`.
+auto library_parameters(const Extraction_parameters& p, const Array_point_map& point_map)
 {
   namespace sfe = CGAL::Sharp_feature_extraction::parameters;
-  const Array_point_map point_map{points.data()};
-  const auto indices = boost::counting_range(std::size_t(0), std::size_t(points.shape(0)));
-  const auto np = sfe::candidate_neighbors(p.candidate_neighbors,
+  return sfe::candidate_neighbors(p.candidate_neighbors,
                   sfe::rmls_neighbors(p.rmls_neighbors,
                   sfe::rmls_tolerance(p.rmls_tolerance,
                   sfe::corner_radius(p.corner_radius,
@@ -273,7 +284,20 @@ bool run_extraction(const Point_array& points, const Extraction_parameters& p,
                     .number_of_iterations(p.number_of_iterations)
                     .maximum_angle(p.maximum_angle)
                     .number_of_relaxation_steps(p.number_of_relaxation_steps);
-  const CGAL::Sharp_feature_extraction_context<Kernel> context(indices, np);
+}
+
+/// The indices 0..N-1 of the rows of `points`, which `Array_point_map` reads.
+auto row_indices(const Point_array& points)
+{
+  return boost::counting_range(std::size_t(0), std::size_t(points.shape(0)));
+}
+
+bool run_extraction(const Point_array& points, const Extraction_parameters& p,
+                    const std::function<bool(double)>& callback, Features& features,
+                    CGAL::Surface_patches<Kernel>& patches)
+{
+  const CGAL::Sharp_feature_extraction_context<Kernel> context(row_indices(points),
+                                                               library_parameters(p, Array_point_map{points.data()}));
   // One progress from 0 to 1: the extraction, then the (much faster) patches.
   const auto extraction_progress = [&](double x) { return callback(extraction_share_of_progress * x); };
   const auto patch_progress = [&](double x) {
@@ -434,6 +458,280 @@ void write_ply(const Result& result, const std::filesystem::path& path)
 }
 
 // ---------------------------------------------------------------------------------------------
+// Tiled extraction
+
+typedef CGAL::Tile_features<Kernel> Tile;
+typedef CGAL::Sharp_feature_scales<double> Scales;
+
+/// The tile-count keyword of `extract_tiled()`: at least one tile.
+constexpr std::size_t default_number_of_tiles = 8;
+
+/// A dict with the fields of `Sharp_feature_scales` (as `scales_dict()` makes it) as scales.
+Scales read_scales(const py::handle& object)
+{
+  if(!py::isinstance<py::dict>(object))
+    throw py::type_error(std::string("scales must be a dict (as estimate_scales() returns it), not ")
+                         + Py_TYPE(object.ptr())->tp_name);
+  const py::dict d = py::reinterpret_borrow<py::dict>(object);
+  const auto field = [&](const char* name) -> py::object {
+    if(!d.contains(name))
+      throw py::value_error(std::string("scales has no '") + name + "'");
+    return d[name];
+  };
+  Scales s;
+  s.spacing = read_real("spacing", field("spacing"));
+  s.noise = read_real("noise", field("noise"));
+  s.candidate_neighbors = read_integer<std::size_t>("candidate_neighbors", field("candidate_neighbors"));
+  s.candidate_radius = read_real("candidate_radius", field("candidate_radius"));
+  s.rmls_neighbors = read_integer<std::size_t>("rmls_neighbors", field("rmls_neighbors"));
+  s.residual_threshold = read_real("residual_threshold", field("residual_threshold"));
+  s.rmls_tolerance = read_real("rmls_tolerance", field("rmls_tolerance"));
+  s.corner_radius = read_real("corner_radius", field("corner_radius"));
+  s.growth_radius = read_real("growth_radius", field("growth_radius"));
+  s.completion_distance = read_real("completion_distance", field("completion_distance"));
+  return s;
+}
+
+/// A point given as three numbers (a box corner).
+std::array<double, 3> read_corner(const char* name, const py::handle& object)
+{
+  const Point_array array = Point_array::ensure(object);
+  if(!array || array.ndim() != 1 || array.shape(0) != dimension)
+    throw py::value_error(std::string(name) + " must be three numbers");
+  return {{array.at(0), array.at(1), array.at(2)}};
+}
+
+/// What `extract_tile()` returns: a `CGAL::Tile_features`, picklable (its state is plain NumPy
+/// arrays and dicts) so that Dask can send it between processes.
+struct Tile_result
+{
+  Tile tile;
+};
+
+/// The pairs of normals of edge points, or the triples of corner points, as an (n, k, 3) array.
+template <std::size_t k>
+py::array_t<double> normal_sets_array(const std::vector<std::array<Kernel::Vector_3, k>>& sets)
+{
+  py::array_t<double> array({py::ssize_t(sets.size()), py::ssize_t(k), dimension});
+  double* out = array.mutable_data();
+  for(const auto& set : sets)
+    for(const Kernel::Vector_3& n : set)
+      for(int c = 0; c < dimension; ++c)
+        *out++ = n[c];
+  return array;
+}
+
+template <typename FeaturePoint>
+std::vector<Kernel::Point_3> positions(const std::vector<FeaturePoint>& points)
+{
+  std::vector<Kernel::Point_3> out;
+  for(const FeaturePoint& p : points)
+    out.push_back(p.point);
+  return out;
+}
+
+template <typename FeaturePoint, std::size_t k>
+std::vector<std::array<Kernel::Vector_3, k>> normal_sets(const std::vector<FeaturePoint>& points)
+{
+  std::vector<std::array<Kernel::Vector_3, k>> out;
+  for(const FeaturePoint& p : points)
+    out.push_back(p.normals);
+  return out;
+}
+
+template <typename FeaturePoint>
+py::array_t<std::int64_t> sources_array(const std::vector<FeaturePoint>& points)
+{
+  py::array_t<std::int64_t> array(py::ssize_t(points.size()));
+  std::int64_t* out = array.mutable_data();
+  for(const FeaturePoint& p : points)
+    *out++ = std::int64_t(p.source);
+  return array;
+}
+
+/// `TileResult.__getstate__()`: a dict of NumPy arrays, numbers and dicts.
+py::dict tile_state(const Tile_result& r)
+{
+  const Tile& t = r.tile;
+  py::dict d;
+  d["core_min"] = py::make_tuple(t.core.xmin(), t.core.ymin(), t.core.zmin());
+  d["core_max"] = py::make_tuple(t.core.xmax(), t.core.ymax(), t.core.zmax());
+  d["edge_points"] = points_array(positions(t.edge_points));
+  d["edge_normals"] = normal_sets_array(normal_sets<CGAL::Edge_point<Kernel>, 2>(t.edge_points));
+  d["edge_sources"] = sources_array(t.edge_points);
+  d["corner_points"] = points_array(positions(t.corner_points));
+  d["corner_normals"] = normal_sets_array(normal_sets<CGAL::Corner_point<Kernel>, 3>(t.corner_points));
+  std::vector<double> weights;
+  for(const auto& c : t.corner_points)
+    weights.push_back(c.weight);
+  d["corner_weights"] = py::array_t<double>(py::ssize_t(weights.size()), weights.data());
+  d["corner_sources"] = sources_array(t.corner_points);
+  d["scales"] = scales_dict(t.scales);
+  d["number_of_core_points"] = t.number_of_core_points;
+  d["number_of_candidates"] = t.number_of_candidates;
+  d["timings"] = timings_dict(t.timings);
+  return d;
+}
+
+/// Row `i` of an (n, k, 3) float64 array as `k` vectors.
+template <std::size_t k>
+std::array<Kernel::Vector_3, k> normal_set(const py::array_t<double>& a, py::ssize_t i)
+{
+  std::array<Kernel::Vector_3, k> set;
+  for(py::ssize_t j = 0; j < py::ssize_t(k); ++j)
+    set[j] = Kernel::Vector_3(a.at(i, j, 0), a.at(i, j, 1), a.at(i, j, 2));
+  return set;
+}
+
+/// `TileResult.__setstate__()`: the inverse of `tile_state()`.
+Tile_result tile_from_state(const py::dict& d)
+{
+  typedef py::array_t<double, py::array::c_style | py::array::forcecast> Reals;
+  typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Integers;
+  Tile_result r;
+  Tile& t = r.tile;
+  const std::array<double, 3> low = read_corner("core_min", d["core_min"]), high = read_corner("core_max", d["core_max"]);
+  t.core = CGAL::Bbox_3(low[0], low[1], low[2], high[0], high[1], high[2]);
+  const Reals edge_points = Reals::ensure(d["edge_points"]), edge_normals = Reals::ensure(d["edge_normals"]);
+  const Integers edge_sources = Integers::ensure(d["edge_sources"]);
+  for(py::ssize_t i = 0; i < edge_sources.shape(0); ++i)
+    t.edge_points.push_back({Kernel::Point_3(edge_points.at(i, 0), edge_points.at(i, 1), edge_points.at(i, 2)),
+                             normal_set<2>(edge_normals, i), std::size_t(edge_sources.at(i))});
+  const Reals corner_points = Reals::ensure(d["corner_points"]), corner_normals = Reals::ensure(d["corner_normals"]);
+  const Reals corner_weights = Reals::ensure(d["corner_weights"]);
+  const Integers corner_sources = Integers::ensure(d["corner_sources"]);
+  for(py::ssize_t i = 0; i < corner_sources.shape(0); ++i)
+    t.corner_points.push_back({Kernel::Point_3(corner_points.at(i, 0), corner_points.at(i, 1), corner_points.at(i, 2)),
+                               normal_set<3>(corner_normals, i), corner_weights.at(i), std::size_t(corner_sources.at(i))});
+  t.scales = read_scales(d["scales"]);
+  t.number_of_core_points = d["number_of_core_points"].cast<std::size_t>();
+  t.number_of_candidates = d["number_of_candidates"].cast<std::size_t>();
+  const py::dict timings = d["timings"].cast<py::dict>();
+  t.timings.context = timings["context"].cast<double>();
+  t.timings.candidates = timings["candidates"].cast<double>();
+  t.timings.projection = timings["projection"].cast<double>();
+  t.timings.smoothing = timings["smoothing"].cast<double>();
+  return r;
+}
+
+/// Checks `progress` and runs `compute(callback)` without the GIL and within the thread limit;
+/// raises if the progress function stopped it.
+template <typename Computation>
+void run_without_gil(const py::object& threads, py::object progress, const Computation& compute)
+{
+  const std::size_t thread_count = read_thread_count(threads);
+  if(!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress must be callable or None");
+  Progress_relay relay(std::move(progress));
+  bool finished = false;
+  {
+    py::gil_scoped_release released;
+    const Thread_limit limit(thread_count);
+    finished = compute(std::function<bool(double)>(std::ref(relay)));
+  }
+  relay.raise_if_stopped(finished);
+}
+
+/// `sharp_features.estimate_scales()`.
+py::dict estimate_scales(const py::object& points_object, const py::object& threads, const py::kwargs& keywords)
+{
+  namespace sfe = CGAL::Sharp_feature_extraction::parameters;
+  const Point_array points = as_point_array(points_object);
+  const Extraction_parameters p = read_parameters(keywords, "estimate_scales", &keywords_of::scales);
+  Scales scales;
+  run_without_gil(threads, py::none(), [&](const std::function<bool(double)>&) {
+    scales = CGAL::estimate_sharp_feature_scales_for_tiles<CGAL::Parallel_if_available_tag>(
+      row_indices(points),
+      sfe::candidate_neighbors(p.candidate_neighbors,
+      sfe::rmls_neighbors(p.rmls_neighbors,
+      sfe::rmls_tolerance(p.rmls_tolerance,
+      sfe::corner_radius(p.corner_radius,
+      sfe::growth_radius(p.growth_radius,
+      sfe::completion_distance(p.completion_distance))))))
+        .point_map(Array_point_map{points.data()})
+        .degree_fitting(p.degree_fitting)
+        .threshold_distance(p.threshold_distance));
+    return true;
+  });
+  return scales_dict(scales);
+}
+
+/// `sharp_features.tile_halo_width()`.
+double tile_halo_width(const py::object& scales, const py::kwargs& keywords)
+{
+  const Extraction_parameters p = read_parameters(keywords, "tile_halo_width", &keywords_of::halo);
+  return CGAL::tile_halo_width(read_scales(scales), CGAL::parameters::number_of_iterations(p.number_of_iterations));
+}
+
+/// `sharp_features.extract_tile()`.
+Tile_result extract_tile(const py::object& points_object, const py::object& box_min, const py::object& box_max,
+                         const py::object& scales_object, const py::object& threads, py::object progress,
+                         const py::kwargs& keywords)
+{
+  const Point_array points = as_point_array(points_object);
+  const Extraction_parameters p = read_parameters(keywords, "extract_tile", &keywords_of::tile);
+  const std::array<double, 3> low = read_corner("box_min", box_min), high = read_corner("box_max", box_max);
+  const CGAL::Bbox_3 core(low[0], low[1], low[2], high[0], high[1], high[2]);
+  const Scales scales = read_scales(scales_object);
+  Tile_result r;
+  run_without_gil(threads, std::move(progress), [&](const std::function<bool(double)>& callback) {
+    return CGAL::extract_tile_features<CGAL::Parallel_if_available_tag>(
+      row_indices(points), core, scales, r.tile,
+      CGAL::parameters::point_map(Array_point_map{points.data()})
+        .degree_fitting(p.degree_fitting)
+        .sharpness_angle(p.sharpness_angle)
+        .number_of_iterations(p.number_of_iterations)
+        .callback(callback));
+  });
+  return r;
+}
+
+/// `sharp_features.stitch_tiles()`.
+Result stitch_tiles(const py::iterable& tile_objects, py::object progress, const py::kwargs& keywords)
+{
+  const Extraction_parameters p = read_parameters(keywords, "stitch_tiles", &keywords_of::stitch);
+  std::vector<Tile> tiles;
+  for(const py::handle& t : tile_objects)
+  {
+    if(!py::isinstance<Tile_result>(t))
+      throw py::type_error(std::string("stitch_tiles() takes TileResult objects, not ") + Py_TYPE(t.ptr())->tp_name);
+    tiles.push_back(t.cast<const Tile_result&>().tile);
+  }
+  Features features;
+  run_without_gil(py::none(), std::move(progress), [&](const std::function<bool(double)>& callback) {
+    return CGAL::stitch_tile_features(tiles, features,
+                                      CGAL::parameters::maximum_angle(p.maximum_angle)
+                                        .number_of_relaxation_steps(p.number_of_relaxation_steps)
+                                        .callback(callback));
+  });
+  return make_result(std::move(features), CGAL::Surface_patches<Kernel>());
+}
+
+/// `sharp_features.extract_tiled()`.
+Result extract_tiled(const py::object& points_object, const py::object& tiles, const py::object& threads,
+                     py::object progress, const py::kwargs& keywords)
+{
+  const Point_array points = as_point_array(points_object);
+  const Extraction_parameters p = read_parameters(keywords, "extract_tiled");
+  const std::size_t tile_count = tiles.is_none() ? default_number_of_tiles : read_integer<std::size_t>("tiles", tiles);
+  Features features;
+  run_without_gil(threads, std::move(progress), [&](const std::function<bool(double)>& callback) {
+    return CGAL::extract_sharp_features_in_tiles<CGAL::Parallel_if_available_tag>(
+      row_indices(points), features,
+      CGAL::Sharp_feature_extraction::parameters::number_of_tiles(tile_count,
+        library_parameters(p, Array_point_map{points.data()}).callback(callback)));
+  });
+  return make_result(std::move(features), CGAL::Surface_patches<Kernel>());
+}
+
+/// `TileResult.__repr__()`.
+std::string tile_repr(const Tile_result& r)
+{
+  return "<sharp_features.TileResult: " + std::to_string(r.tile.edge_points.size()) + " edge points, "
+         + std::to_string(r.tile.corner_points.size()) + " corner points>";
+}
+
+// ---------------------------------------------------------------------------------------------
 // The module
 
 /// `sharp_features.extract()` (see its docstring): reads and checks the arguments with the GIL,
@@ -468,7 +766,7 @@ std::string result_repr(const Result& r)
 
 } // namespace
 
-PYBIND11_MODULE(sharp_features, m)
+PYBIND11_MODULE(_sharp_features, m)
 {
   m.doc() = docstrings::module;
   m.attr("__version__") = SFE_VERSION;
@@ -488,4 +786,18 @@ PYBIND11_MODULE(sharp_features, m)
 
   m.def("extract", &extract, py::arg("points"), py::kw_only(), py::arg("threads") = py::none(),
         py::arg("progress") = py::none(), docstrings::extract);
+
+  py::class_<Tile_result>(m, "TileResult", docstrings::tile_result)
+    .def_property_readonly("state", &tile_state, docstrings::tile_state)
+    .def("__repr__", &tile_repr, docstrings::tile_repr)
+    .def(py::pickle(&tile_state, &tile_from_state));
+  m.def("estimate_scales", &estimate_scales, py::arg("points"), py::kw_only(), py::arg("threads") = py::none(),
+        docstrings::estimate_scales);
+  m.def("tile_halo_width", &tile_halo_width, py::arg("scales"), docstrings::tile_halo_width);
+  m.def("extract_tile", &extract_tile, py::arg("points"), py::arg("box_min"), py::arg("box_max"), py::arg("scales"),
+        py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = py::none(), docstrings::extract_tile);
+  m.def("stitch_tiles", &stitch_tiles, py::arg("tiles"), py::kw_only(), py::arg("progress") = py::none(),
+        docstrings::stitch_tiles);
+  m.def("extract_tiled", &extract_tiled, py::arg("points"), py::kw_only(), py::arg("tiles") = py::none(),
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(), docstrings::extract_tiled);
 }

@@ -139,6 +139,102 @@ The curve vertices with both normals, a corner flag and a curve index, and one e
 segment: the file the extract_sharp_features program writes with --ply. path is a str or an
 os.PathLike; raises OSError if the file cannot be written.)doc";
 
+constexpr const char* estimate_scales = R"doc(Estimates, once for a whole cloud, the scales every tile shares.
+
+CGAL::estimate_sharp_feature_scales_for_tiles(): the scales of extract() from a regular
+subsample of at most 20,000 points, and the stage-1 candidate threshold (residual_threshold)
+from the residuals of the same subsample, so that every tile uses one threshold.
+
+points may be the whole cloud or a part that keeps its sampling density (whole tiles, never
+every k-th point: a sparser cloud has a larger spacing and every scale follows it).
+
+Keywords: threads (as for extract()), and those of extract() that set the scales:
+degree_fitting, threshold_distance, candidate_neighbors, rmls_neighbors, rmls_tolerance,
+corner_radius, growth_radius, completion_distance.
+
+Returns
+-------
+dict
+    The fields of CGAL::Sharp_feature_scales (see Result.scales), to give to tile_halo_width(),
+    extract_tile() and every worker.
+)doc";
+
+constexpr const char* tile_halo_width = R"doc(The halo a tile needs around its core box, a distance.
+
+CGAL::tile_halo_width(): the points given to extract_tile() must be those within this distance
+of the core box (along each axis), so that the tile's feature points are exactly those of the
+whole cloud. scales is the dict estimate_scales() returns; the keyword number_of_iterations
+(default 3) must be the one given to extract_tile().
+)doc";
+
+constexpr const char* extract_tile = R"doc(Stages 1 to 3 on one tile: the feature points its core box owns.
+
+CGAL::extract_tile_features(). points are the tile's points: the core box [box_min, box_max)
+(half-open on every axis: a point on a max face belongs to the next tile) and its halo of
+tile_halo_width(scales). scales is the dict estimate_scales() returns, the same for every tile.
+The keywords are threads and progress (as for extract()) and degree_fitting, sharpness_angle and
+number_of_iterations.
+
+Returns
+-------
+TileResult
+    The edge and corner points whose source point lies in the core box; picklable.
+
+Raises
+------
+ValueError
+    A coordinate or a parameter is out of range, or box_min is not below box_max on every axis.
+Cancelled
+    The progress function returned False.
+)doc";
+
+constexpr const char* stitch_tiles = R"doc(Joins the tiles of a cloud into its feature curves.
+
+CGAL::stitch_tile_features(): the tiles' feature points form the feature points of the whole
+cloud; the curves are grown and completed through all of them at once (stages 4 and 5), so they
+cross the tile faces without a gap or a duplicate, share their corners and close their loops.
+The result does not depend on the order of tiles. Keywords: progress, maximum_angle and
+number_of_relaxation_steps.
+
+Returns
+-------
+Result
+    The curves, corners, scales and timings (summed over the tiles); Result.patches is empty
+    (the patches need the whole cloud).
+
+Raises
+------
+ValueError
+    The tiles have different scales or overlapping core boxes.
+)doc";
+
+constexpr const char* extract_tiled = R"doc(Extracts the sharp feature curves of a point cloud tile by tile.
+
+CGAL::extract_sharp_features_in_tiles(): estimate_scales() once, extract_tile() on each cell of
+a grid of at least `tiles` cells (default 8) over the bounding box, one tile at a time, then
+stitch_tiles(). The curves are those of extract() given threshold_distance equal to the tiled
+scales' residual_threshold. Keywords: those of extract().
+
+Returns
+-------
+Result
+    As stitch_tiles() returns it (Result.patches is empty).
+)doc";
+
+constexpr const char* tile_result = R"doc(The feature points of one tile, as extract_tile() returns them.
+
+Picklable (its state is a dict of NumPy arrays and numbers), so that it can be sent between
+processes; stitch_tiles() takes a list of them.)doc";
+
+constexpr const char* tile_state = R"doc(The tile as a dict (its pickled state).
+
+core_min, core_max: the core box; edge_points (n, 3), edge_normals (n, 2, 3), edge_sources (n,):
+the edge points, the normals of their two surfaces and the index of their source point in the
+tile's points; corner_points (m, 3), corner_normals (m, 3, 3), corner_weights (m,),
+corner_sources (m,); scales; number_of_core_points, number_of_candidates; timings.)doc";
+
+constexpr const char* tile_repr = R"doc(A one-line summary: the numbers of edge and corner points.)doc";
+
 } // namespace docstrings
 
 #endif

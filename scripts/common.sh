@@ -14,9 +14,11 @@ SFE_CGAL_DATA_ARCHIVE="${SFE_CGAL_DATA_ARCHIVE:-/usr/share/doc/libcgal-dev/data.
 
 # Debian packages needed to build the package, its examples, tests and documentation.
 SFE_PACKAGES=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev catch2 doxygen)
-# Debian packages needed, besides those, to build and test the Python module (python/).
+# Debian packages needed, besides those, to build and test the Python module (python/); dask's
+# python3-distributed runs `python3 -m sharp_features --workers K`, python3-tqdm draws its
+# progress bar.
 # shellcheck disable=SC2034 # used by the scripts that source this file
-SFE_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest)
+SFE_PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-tqdm)
 # Debian's python3, for which the module is built and tested: another python3 coming first in
 # PATH (pyenv, conda, a virtual environment) would have neither these packages nor its headers.
 # shellcheck disable=SC2034 # used by the scripts that source this file

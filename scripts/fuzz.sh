@@ -4,7 +4,7 @@
 #
 #   bash scripts/fuzz.sh SECONDS [TARGET...]     # default: every target
 #
-# Targets: fuzz_read_polylines, fuzz_read_xyz, fuzz_read_ply, fuzz_read_off (the readers of
+# Targets: fuzz_read_polylines, fuzz_read_xyz, fuzz_read_ply, fuzz_read_off, fuzz_read_las (the readers of
 # the package and of its program) and fuzz_extract_sharp_features (the whole pipeline).
 # Each starts from its seeds in test/Sharp_feature_extraction/fuzz/corpus/TARGET and grows a
 # corpus of its own in out/fuzz/corpus/TARGET, kept between runs. Runs SFE_FUZZ_PARALLEL targets
@@ -19,7 +19,7 @@ usage="usage: bash scripts/fuzz.sh SECONDS [TARGET...]"
 seconds="$1"
 shift
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || sfe_die "SECONDS must be a positive integer ($usage)"
-all_targets=(fuzz_read_polylines fuzz_read_xyz fuzz_read_ply fuzz_read_off fuzz_extract_sharp_features)
+all_targets=(fuzz_read_polylines fuzz_read_xyz fuzz_read_ply fuzz_read_off fuzz_read_las fuzz_extract_sharp_features)
 targets=("$@")
 [ "${#targets[@]}" -gt 0 ] || targets=("${all_targets[@]}")
 for target in "${targets[@]}"; do
@@ -57,6 +57,7 @@ run_target() {
   local options=(-max_total_time="$seconds" -timeout="$timeout_seconds" -rss_limit_mb="$rss_limit_mb"
                  -print_final_stats=1 -artifact_prefix="$artifacts/")
   [ "$target" != fuzz_read_ply ] || options+=(-dict="$fuzz_source/ply.dict")
+  [ "$target" != fuzz_read_las ] || options+=(-dict="$fuzz_source/las.dict")
   # New inputs go to the first corpus directory; the seeds in the repository are only read.
   local status=0
   nice -n 10 "$build/$target" "${options[@]}" "$corpus" "$fuzz_source/corpus/$target" \

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs the Python module sharp_features for Debian's python3 (/usr/bin/python3, whatever
+# Installs the Python package sharp_features for Debian's python3 (/usr/bin/python3, whatever
 # python3 comes first in PATH), so that `/usr/bin/python3 -c "import sharp_features"` works from
 # any directory, for every user, with no PYTHONPATH:
 #
@@ -8,7 +8,7 @@
 # Installs the Debian packages that are missing, builds the module (Release) in build-python/
 # and copies it into the site-packages directory that Debian's python3 reads and dpkg leaves
 # alone (/usr/local/lib/python3.X/dist-packages, where `pip install` puts packages as root).
-# To remove it: the file listed in build-python/install_manifest_python.txt.
+# To remove it: the files listed in build-python/install_manifest_python.txt.
 # To use the module without installing it instead: PYTHONPATH=build-python/python.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh

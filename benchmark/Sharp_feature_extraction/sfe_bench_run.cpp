@@ -5,7 +5,7 @@
 //
 //   sfe_bench_run --mesh M.off --truth PREFIX --points 100000 --noise 0.005 [--outliers 0.01]
 //                 [--denser 5] [--seed 1] [--output rows.jsonl] [--picture curves.png]
-//                 [--save-curves curves.polylines.txt] [--stage-memory 1] [--threads N]
+//                 [--save-curves curves.polylines.txt] [--stage-memory 1] [--threads N] [--tiles T]
 //
 // Samples the cloud (same sampler and seed as sfe_vcm_run, so both see the same points), runs
 // CGAL::extract_sharp_features with default parameters only, and appends one JSON line: the
@@ -17,12 +17,17 @@
 // each (extract_sharp_features gives one peak for the whole run).
 //
 // --threads N limits the run to N threads (default 0: all cores).
+//
+// --tiles T runs CGAL::extract_sharp_features_in_tiles with at least T tiles instead (default 0:
+// untiled); the candidates and projected points, which the tiled run does not keep, are then not
+// scored.
 
 #include "bench_support.h"
 #include "memory_tracking.h"
 #include "patch_scoring.h"
 
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/extract_sharp_features_in_tiles.h>
 
 #include <utilities/feature_rendering.h>
 
@@ -147,6 +152,7 @@ int main(int argc, char** argv)
     defaults["save-curves"] = "";
     defaults["stage-memory"] = "0";
     defaults["threads"] = "0";
+    defaults["tiles"] = "0";
     defaults["patches"] = "1";
     // The dihedral angle of the ground truth's creases (sfe_ground_truth --angle): the true
     // patches are the faces joined across the other edges.
@@ -169,12 +175,17 @@ int main(int argc, char** argv)
     add_cloud_fields(line, options, cloud.size());
     line.add("method", "ours");
     line.add("threads", threads);
+    const std::size_t tiles = std::size_t(options.number("tiles"));
+    line.add("tiles", tiles);
     {
       Result result;
       reset_heap_peak();
       const std::size_t heap_before = heap_bytes_in_use();
       const Stopwatch clock;
-      const bool completed = CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(cloud, result);
+      const bool completed = tiles == 0
+        ? CGAL::extract_sharp_features<CGAL::Parallel_if_available_tag>(cloud, result)
+        : CGAL::extract_sharp_features_in_tiles<CGAL::Parallel_if_available_tag>(
+            cloud, result, CGAL::Sharp_feature_extraction::parameters::number_of_tiles(tiles));
       const double wall = clock.seconds();
       const double heap_peak = (heap_peak_bytes() - heap_before) / 1048576.;
 
@@ -194,7 +205,8 @@ int main(int argc, char** argv)
       line.add("scale_spacing", s.spacing / truth.diagonal)
           .add("scale_noise", s.noise / truth.diagonal)
           .add("scale_candidate_neighbors", s.candidate_neighbors)
-          .add("scale_rmls_neighbors", s.rmls_neighbors);
+          .add("scale_rmls_neighbors", s.rmls_neighbors)
+          .add("scale_residual_threshold", s.residual_threshold / truth.diagonal);
 
       const std::vector<double> eps = report_eps();
       add_curve_fields(line, "ours",
@@ -202,11 +214,14 @@ int main(int argc, char** argv)
                        has_truth);
       add_curve_fields(line, "grown",
                        evaluate_curves(truth, polylines_of(result.grown), corners_of(result.grown), eps), has_truth);
-      std::vector<Point> candidates;
-      for(std::size_t i : result.candidates.indices)
-        candidates.push_back(cloud[i]);
-      add_point_fields(line, "candidates", evaluate_points(truth, candidates, eps), has_truth);
-      add_point_fields(line, "projected", evaluate_points(truth, points_of(result.projected), eps), has_truth);
+      if(tiles == 0)
+      {
+        std::vector<Point> candidates;
+        for(std::size_t i : result.candidates.indices)
+          candidates.push_back(cloud[i]);
+        add_point_fields(line, "candidates", evaluate_points(truth, candidates, eps), has_truth);
+        add_point_fields(line, "projected", evaluate_points(truth, points_of(result.projected), eps), has_truth);
+      }
       add_point_fields(line, "smoothed", evaluate_points(truth, points_of(result.smoothed), eps), has_truth);
 
       if(options.number("patches") != 0)

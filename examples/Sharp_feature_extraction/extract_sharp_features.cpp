@@ -2,7 +2,7 @@
 //
 //   extract_sharp_features INPUT -o OUT.polylines.txt [--ply OUT.ply] [--patches LABELS.txt] [overrides]
 //
-// Reads .xyz/.ply/.off points (normals ignored), runs the five stages with scales derived from the
+// Reads .xyz/.ply/.off/.las points (normals ignored), runs the five stages with scales derived from the
 // data (or overridden), writes the curves in Mesh_3's polyline format and, optionally, a PLY with
 // the curve vertices, edges, both surface normals and corner flags, and the surface patch of
 // every point. Prints a summary.
@@ -35,7 +35,7 @@ namespace {
 
 const char* usage =
   "usage: extract_sharp_features INPUT -o OUT.polylines.txt [options]\n"
-  "  INPUT                     point cloud: .xyz, .ply or .off (only positions are used)\n"
+  "  INPUT                     point cloud: .xyz, .ply, .off or .las (only positions are used)\n"
   "  -o, --output FILE         curves in Mesh_3's polyline format (one per line: n x1 y1 z1 ...)\n"
   "  --ply FILE                also write curve vertices, edges, both normals and corner flags\n"
   "  --patches FILE            also write the surface patch of every input point, one integer per\n"

@@ -434,11 +434,11 @@ TEST_CASE("read_point_cloud picks the format from the file extension and leaves 
   std::remove(filename.c_str());
   CHECK_FALSE(CGAL::IO::read_point_cloud(filename, points, &why));
   CHECK(why == "cannot open the file");
-  CHECK_FALSE(CGAL::IO::read_point_cloud("cloud.las", points, &why));
-  CHECK(why == "unknown file extension 'las' (expected .xyz, .ply or .off)");
+  CHECK_FALSE(CGAL::IO::read_point_cloud("cloud.e57", points, &why));
+  CHECK(why == "unknown file extension 'e57' (expected .xyz, .ply, .off or .las)");
   CHECK_FALSE(CGAL::IO::read_point_cloud("a.dir/cloud", points));
   CHECK(points.size() == 3);
-  CHECK(mentions(rejection("0 0 0\n", "las"), "unknown point cloud format 'las'"));
+  CHECK(mentions(rejection("0 0 0\n", "e57"), "unknown point cloud format 'e57'"));
   CHECK(mentions(rejection("0 0 0\n1 1\n", "xyz"), "line 2"));
   std::vector<Point_3> kept{Point_3(1, 1, 1)};
   CHECK_FALSE(reads_cloud("0 0 0\n1 1\n", "xyz", kept, why));

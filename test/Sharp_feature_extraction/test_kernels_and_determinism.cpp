@@ -6,6 +6,7 @@
 // corner/curve incidences).
 
 #include "analytic_shapes.h"
+#include "identical_networks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -36,39 +37,6 @@ CGAL::Sharp_features<K> extract_with(const Shape& shape, double noise)
   CGAL::Sharp_features<K> result;
   REQUIRE(CGAL::extract_sharp_features<CGAL::Sequential_tag>(points, result));
   return result;
-}
-
-/// Bit-identical curve networks, possibly of different kernels.
-template <typename K1, typename K2>
-void check_identical(const CGAL::Feature_curve_network<K1>& a, const CGAL::Feature_curve_network<K2>& b)
-{
-  REQUIRE(a.polylines.size() == b.polylines.size());
-  REQUIRE(a.corners.size() == b.corners.size());
-  for(std::size_t c = 0; c < a.polylines.size(); ++c)
-  {
-    const auto& p = a.polylines[c];
-    const auto& q = b.polylines[c];
-    REQUIRE(p.points.size() == q.points.size());
-    CHECK(p.front_corner == q.front_corner);
-    CHECK(p.back_corner == q.back_corner);
-    bool same = true;
-    for(std::size_t i = 0; i < p.points.size(); ++i)
-    {
-      for(int k = 0; k < 3; ++k)
-        same = same && CGAL::to_double(p.points[i][k]) == CGAL::to_double(q.points[i][k])
-                    && CGAL::to_double(p.normals[i][0][k]) == CGAL::to_double(q.normals[i][0][k])
-                    && CGAL::to_double(p.normals[i][1][k]) == CGAL::to_double(q.normals[i][1][k]);
-    }
-    INFO("curve " << c);
-    CHECK(same);
-  }
-  for(std::size_t k = 0; k < a.corners.size(); ++k)
-  {
-    CHECK(to_vec(a.corners[k].point).x == to_vec(b.corners[k].point).x);
-    CHECK(to_vec(a.corners[k].point).y == to_vec(b.corners[k].point).y);
-    CHECK(to_vec(a.corners[k].point).z == to_vec(b.corners[k].point).z);
-    CHECK(a.corners[k].incident_polylines == b.corners[k].incident_polylines);
-  }
 }
 
 /// Records every progress value; returns false once `stop_at` is reached.

@@ -16,6 +16,7 @@ enum rmls_tolerance_t { rmls_tolerance };
 enum corner_radius_t { corner_radius };
 enum growth_radius_t { growth_radius };
 enum completion_distance_t { completion_distance };
+enum number_of_tiles_t { number_of_tiles };
 } // namespace internal_np
 
 /// \ingroup PkgSharpFeatureExtractionRef
@@ -53,6 +54,9 @@ CGAL_SFE_NAMED_PARAMETER(growth_radius)
 /// Largest gap bridged by completion. Default: 7 times the sampling spacing, and at least
 /// 3 times the growth radius.
 CGAL_SFE_NAMED_PARAMETER(completion_distance)
+/// The least number of tiles `extract_sharp_features_in_tiles()` cuts the cloud into.
+/// Default: 8.
+CGAL_SFE_NAMED_PARAMETER(number_of_tiles)
 
 } // namespace parameters
 } // namespace Sharp_feature_extraction

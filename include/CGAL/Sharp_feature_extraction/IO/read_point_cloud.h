@@ -13,9 +13,12 @@
 #include <cstring>
 #include <fstream>
 #include <istream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <CGAL/Sharp_feature_extraction/IO/read_LAS_points.h>
 
 namespace CGAL {
 namespace Sharp_feature_extraction {
@@ -95,12 +98,19 @@ inline std::string at_line(std::size_t line_number) { return "line " + std::to_s
 inline bool is_count(double v) { return v >= 0 && v == std::floor(v) && v < 9.0e15; } // exact in a double
 
 // `where` and `index` say where the point is ("line", 12), for the reason.
+inline bool check_finite(const double* xyz, const char* where, std::uint64_t index, Point_cloud_reader_state& state)
+{
+  if(!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+    return state.fail(where + (" " + std::to_string(index)) + ": non-finite coordinate");
+  return true;
+}
+
 template <typename Point_3>
 bool append_point(const double* xyz, const char* where, std::uint64_t index, std::vector<Point_3>& points,
                   Point_cloud_reader_state& state)
 {
-  if(!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
-    return state.fail(where + (" " + std::to_string(index)) + ": non-finite coordinate");
+  if(!check_finite(xyz, where, index, state))
+    return false;
   points.emplace_back(xyz[0], xyz[1], xyz[2]);
   return true;
 }
@@ -384,61 +394,111 @@ inline bool read_ply_header(std::istream& is, Ply_body::Format& format, std::vec
   return state.fail("the header has no end_header line");
 }
 
-// PLY, ASCII or binary: the x, y and z properties of the vertex element (any numeric type);
-// other properties and elements are skipped.
+// The vertices of a PLY stream, ASCII or binary, a bounded number at a time: `open` reads the
+// header and the elements before the vertices, `read` the next vertices' x, y and z (any
+// numeric type; other properties are skipped). Elements after the vertices are not read.
+class Ply_vertex_stream
+{
+public:
+  bool open(std::istream& is, Point_cloud_reader_state& state)
+  {
+    Ply_body::Format format = Ply_body::ascii;
+    if(!read_ply_header(is, format, elements_, state))
+      return false;
+    vertex_ = std::size_t(std::find_if(elements_.begin(), elements_.end(), [](const Ply_element& e) {
+                            return e.name == "vertex" || e.name == "vertices";
+                          }) - elements_.begin());
+    if(vertex_ == elements_.size())
+      return state.fail("no vertex element in the header");
+    const auto& props = elements_[vertex_].properties;
+    const char* const axes[3] = {"x", "y", "z"};
+    for(int axis = 0; axis < 3; ++axis)
+    {
+      const auto is_axis = [&](const Ply_property& p) { return p.name == axes[axis]; };
+      const auto found = std::find_if(props.begin(), props.end(), is_axis);
+      if(found == props.end())
+        return state.fail(std::string("the vertex element has no '") + axes[axis] +
+                          "' property (x, y and z are required)");
+      if(found->is_list() || std::count_if(props.begin(), props.end(), is_axis) > 1)
+        return state.fail(std::string("the vertex property '") + axes[axis] + "' must be a single number");
+      coordinate_[axis] = std::size_t(found - props.begin());
+    }
+    is_ = &is;
+    body_.emplace(is, format);
+    // Items without properties take no room in the body, however many there are.
+    for(std::size_t e = 0; e < vertex_; ++e)
+      for(std::uint64_t item = 0; item < elements_[e].count && !elements_[e].properties.empty(); ++item)
+        if(!read_item(elements_[e], item, state))
+          return false;
+    return true;
+  }
+
+  // Number of vertices the header announces.
+  std::uint64_t size() const { return elements_[vertex_].count; }
+
+  // Appends the next vertices, at most `max_points`, to `xyz` (x, y, z each); `read` receives
+  // how many were appended, fewer than `max_points` only at the end.
+  bool read(std::size_t max_points, std::vector<double>& xyz, std::size_t& read, Point_cloud_reader_state& state)
+  {
+    const Ply_element& vertex = elements_[vertex_];
+    read = 0;
+    for(; read < max_points && next_vertex_ < vertex.count; ++read, ++next_vertex_)
+    {
+      if(!read_item(vertex, next_vertex_, state))
+        return false;
+      const double point[3] = {values_[coordinate_[0]], values_[coordinate_[1]], values_[coordinate_[2]]};
+      if(!check_finite(point, "vertex", next_vertex_, state))
+        return false;
+      xyz.insert(xyz.end(), point, point + 3);
+    }
+    return true;
+  }
+
+private:
+  bool read_item(const Ply_element& element, std::uint64_t item, Point_cloud_reader_state& state)
+  {
+    values_.clear();
+    for(const Ply_property& p : element.properties)
+    {
+      double v;
+      if(!body_->read(p.is_list() ? p.count_type : p.type, v) ||
+         (p.is_list() && (!is_count(v) || !body_->skip(p.type, std::uint64_t(v)))))
+        return state.fail(is_->bad() ? std::string("read error")
+                                     : "element '" + element.name + "': item " + std::to_string(item) + " of " +
+                                         std::to_string(element.count) + " is truncated or malformed");
+      values_.push_back(v);
+    }
+    return true;
+  }
+
+  std::vector<Ply_element> elements_;
+  std::size_t vertex_ = 0;
+  std::size_t coordinate_[3] = {0, 0, 0};
+  std::istream* is_ = nullptr;
+  std::optional<Ply_body> body_;
+  std::uint64_t next_vertex_ = 0;
+  std::vector<double> values_;
+};
+
+// PLY, ASCII or binary: every vertex of the stream (see Ply_vertex_stream).
 template <typename Point_3>
 bool read_ply_points(std::istream& is, std::vector<Point_3>& points, Point_cloud_reader_state& state)
 {
-  Ply_body::Format format = Ply_body::ascii;
-  std::vector<Ply_element> elements;
-  if(!read_ply_header(is, format, elements, state))
+  // Vertices decoded per read: the doubles of a chunk take 24 bytes a vertex, 1.5 MB.
+  constexpr std::size_t chunk_points = 1 << 16;
+  Ply_vertex_stream vertices;
+  if(!vertices.open(is, state))
     return false;
-  const auto vertex = std::find_if(elements.begin(), elements.end(),
-                                   [](const Ply_element& e) { return e.name == "vertex" || e.name == "vertices"; });
-  if(vertex == elements.end())
-    return state.fail("no vertex element in the header");
-  std::size_t coordinate[3];
-  const char* const axes[3] = {"x", "y", "z"};
-  for(int axis = 0; axis < 3; ++axis)
+  std::vector<double> xyz;
+  std::size_t read = 0;
+  do
   {
-    const auto& props = vertex->properties;
-    const auto is_axis = [&](const Ply_property& p) { return p.name == axes[axis]; };
-    const auto found = std::find_if(props.begin(), props.end(), is_axis);
-    if(found == props.end())
-      return state.fail(std::string("the vertex element has no '") + axes[axis] +
-                        "' property (x, y and z are required)");
-    if(found->is_list() || std::count_if(props.begin(), props.end(), is_axis) > 1)
-      return state.fail(std::string("the vertex property '") + axes[axis] + "' must be a single number");
-    coordinate[axis] = std::size_t(found - props.begin());
-  }
-
-  Ply_body body(is, format);
-  std::vector<double> values;
-  for(auto element = elements.begin(); element != vertex + 1; ++element)
-  {
-    if(element->properties.empty())
-      continue; // items without properties take no room in the body, however many there are
-    for(std::uint64_t item = 0; item < element->count; ++item)
-    {
-      values.clear();
-      for(const Ply_property& p : element->properties)
-      {
-        double v;
-        if(!body.read(p.is_list() ? p.count_type : p.type, v) ||
-           (p.is_list() && (!is_count(v) || !body.skip(p.type, std::uint64_t(v)))))
-          return state.fail(is.bad() ? std::string("read error")
-                                     : "element '" + element->name + "': item " + std::to_string(item) + " of " +
-                                         std::to_string(element->count) + " is truncated or malformed");
-        values.push_back(v);
-      }
-      if(element == vertex)
-      {
-        const double xyz[3] = {values[coordinate[0]], values[coordinate[1]], values[coordinate[2]]};
-        if(!append_point(xyz, "vertex", item, points, state))
-          return false;
-      }
-    }
-  }
+    xyz.clear();
+    if(!vertices.read(chunk_points, xyz, read, state))
+      return false;
+    for(std::size_t i = 0; i < xyz.size(); i += 3)
+      points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  } while(read == chunk_points);
   return true;
 }
 
@@ -448,8 +508,8 @@ bool read_ply_points(std::istream& is, std::vector<Point_3>& points, Point_cloud
 namespace IO {
 
 /// \ingroup PkgSharpFeatureExtractionIORef
-/// Reads the positions of a point cloud from a stream in one of the formats `"xyz"`, `"ply"` or
-/// `"off"` (letter case does not matter), and rejects malformed input with a reason:
+/// Reads the positions of a point cloud from a stream in one of the formats `"xyz"`, `"ply"`,
+/// `"off"` or `"las"` (letter case does not matter), and rejects malformed input with a reason:
 /// - <b>XYZ</b>: one point per line, `x y z`, optionally followed by more numbers (normals,
 ///   colours), which are ignored; blank lines and `#` comments are skipped; the first line may
 ///   hold the number of points alone, which must then match.
@@ -459,13 +519,15 @@ namespace IO {
 /// - <b>PLY</b>, ASCII or binary (either byte order): the properties `x`, `y` and `z` of the
 ///   element `vertex`, of any numeric type; other properties and elements are skipped. A vertex
 ///   element without all three properties is rejected (CGAL's reader fills missing ones with 0).
+/// - <b>LAS</b> 1.2 to 1.4, uncompressed, point formats 0 to 10, scale and offset applied (see
+///   `LAS_point_reader`, which reads such a file a chunk at a time); LAZ files are rejected.
 ///
 /// In every format a point with a non-finite coordinate (NaN or infinity) is rejected: the
 /// functions of this package would throw `std::invalid_argument` on it.
-/// For a binary PLY stream, open it with `std::ios::binary`.
+/// For a binary PLY or a LAS stream, open it with `std::ios::binary`.
 /// \tparam Point_3 a point type constructible from three doubles.
 /// \param is the stream.
-/// \param format `"xyz"`, `"ply"` or `"off"`.
+/// \param format `"xyz"`, `"ply"`, `"off"` or `"las"`.
 /// \param points receives the points on success, appended; left unchanged on failure.
 /// \param error if not null, receives on failure one line saying what is wrong, and where
 ///   (for example `line 12: expected three coordinates, found 2`).
@@ -482,7 +544,8 @@ bool read_point_cloud(std::istream& is, const std::string& format, std::vector<P
                 : f == "xyz" ? sfe::read_xyz_points(is, read, state)
                 : f == "off" ? sfe::read_off_points(is, read, state)
                 : f == "ply" ? sfe::read_ply_points(is, read, state)
-                : state.fail("unknown point cloud format '" + format + "' (expected xyz, ply or off)");
+                : f == "las" ? read_LAS_points(is, read, &state.reason)
+                : state.fail("unknown point cloud format '" + format + "' (expected xyz, ply, off or las)");
   if(ok)
     points.insert(points.end(), read.begin(), read.end());
   else if(error != nullptr)
@@ -491,7 +554,7 @@ bool read_point_cloud(std::istream& is, const std::string& format, std::vector<P
 }
 
 /// \ingroup PkgSharpFeatureExtractionIORef
-/// Same, from the file `filename`, whose extension (`.xyz`, `.ply` or `.off`, in any letter case)
+/// Same, from the file `filename`, whose extension (`.xyz`, `.ply`, `.off` or `.las`, in any letter case)
 /// gives the format; `false` with a reason if the extension is none of these or the file cannot
 /// be opened. The `extract_sharp_features` program reads its input with this function.
 template <typename Point_3>
@@ -502,10 +565,10 @@ bool read_point_cloud(const std::string& filename, std::vector<Point_3>& points,
   const std::string extension =
     (dot == std::string::npos || (slash != std::string::npos && dot < slash)) ? "" : filename.substr(dot + 1);
   const std::string format = Sharp_feature_extraction::internal::lower_case(extension);
-  if(format != "xyz" && format != "ply" && format != "off")
+  if(format != "xyz" && format != "ply" && format != "off" && format != "las")
   {
     if(error != nullptr)
-      *error = "unknown file extension '" + extension + "' (expected .xyz, .ply or .off)";
+      *error = "unknown file extension '" + extension + "' (expected .xyz, .ply, .off or .las)";
     return false;
   }
   std::ifstream is(filename, std::ios::binary);

@@ -29,7 +29,7 @@ constexpr double neighborhood_guess_factor = 1.5;
 /// Below this many points, every query goes to the k-d tree.
 constexpr std::size_t smallest_gridded_set = 4096;
 
-/// The `k` nearest of `candidates` to `p` (in `neighbors`, in no particular order), if they
+/// The `k` nearest of `candidates` to `p` (in `neighbors`, nearest first), if they
 /// all lie within `margin` of `p` (then no point outside the candidates' box is closer); false
 /// otherwise. `previous` is the squared k-th distance of the point answered before (0 if
 /// none): the candidates within `neighborhood_guess_factor` of it are ranked first, and it is
@@ -51,7 +51,10 @@ inline bool nearest_among(const std::vector<Vec3>& points, const Vec3& p, const 
     }
     if(ranked.size() >= k)
     {
-      std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
+      // Nearest first: the fits then sum the neighbours in an order that depends on the points
+      // only, so that a tile of the cloud (see `extract_tile_features()`) gets the same residuals
+      // to the last bit as the whole cloud, not an order that depends on the numbering.
+      std::partial_sort(ranked.begin(), ranked.begin() + k, ranked.end());
       previous = ranked[k - 1].first;
       neighbors.clear();
       for(std::size_t r = 0; r < k; ++r)
@@ -65,7 +68,7 @@ inline bool nearest_among(const std::vector<Vec3>& points, const Vec3& p, const 
 }
 
 /// Calls `body(i, neighbors)` for every point `i` of `points` with its `k` nearest points of
-/// `points` (`i` included, in no particular order); `index` must index `points`. The points
+/// `points` (`i` included, nearest first); `index` must index `points`. The points
 /// are put in cubic cells of side `cell`, about as wide as a neighbourhood (see
 /// `neighborhood_cell_per_radius`): the points of a cell share the candidates of the 27 cells
 /// around it, and their neighbourhoods are selected from those. A point whose k-th neighbour
@@ -96,7 +99,7 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
       std::vector<std::size_t> neighbors;
       for(std::size_t i = first; i < last; ++i)
       {
-        index.nearest(points[i], k, neighbors, false);
+        index.nearest(points[i], k, neighbors);
         body(i, neighbors);
       }
     });
@@ -123,7 +126,7 @@ bool for_each_neighborhood(const std::vector<Vec3>& points, const Point_index& i
         const Vec3& p = points[i];
         const double margin = (std::min)((p - box_low).minCoeff(), (box_high - p).minCoeff());
         if(!nearest_among(points, p, candidates, k, margin, previous, ranked, neighbors))
-          index.nearest(p, k, neighbors, false);
+          index.nearest(p, k, neighbors);
         body(i, neighbors);
       }
     }

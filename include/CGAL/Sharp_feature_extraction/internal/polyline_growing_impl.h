@@ -54,7 +54,7 @@ public:
     m_cos_cone = std::cos(radians(Constants::cone_angle));
   }
 
-  /// Seeds in order: farthest from any corner first (ties by index, for determinism).
+  /// Seeds in order: farthest from any corner first (ties by coordinates, for determinism).
   std::vector<std::size_t> seed_order() const
   {
     std::vector<double> distance(m_edges.size(), 0.);
@@ -67,7 +67,16 @@ public:
       }
     std::vector<std::size_t> order(m_edges.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return distance[a] > distance[b]; });
+    // Ties (every seed of a network without corners) broken by coordinates, not by the order of
+    // the edge points: the stitcher of a tiled extraction (see `stitch_tile_features()`) then
+    // starts from the same seeds as the whole cloud.
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if(distance[a] != distance[b])
+        return distance[a] > distance[b];
+      const Vec3& p = m_edges[a].point;
+      const Vec3& q = m_edges[b].point;
+      return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3) || (p == q && a < b);
+    });
     return order;
   }
 

@@ -692,6 +692,10 @@ inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const s
   Vec3 low = points[candidates.front()];
   for(std::size_t c : candidates)
     low = low.cwiseMin(points[c]);
+  // Cells anchored at multiples of their side, not at the lowest candidate: a tile of the cloud
+  // (see `extract_tile_features()`) then groups its candidates as the whole cloud does.
+  if(cell > 0)
+    low = (low / cell).array().floor().matrix() * cell;
   // A cloud wider than `Grid_key` holds (far outliers) aliases cells 2^21 cells apart.
   // Candidates far from the surfaces of their cell then search their own, or fail the support
   // test of the projection: aliasing costs time, never wrong edge points.
@@ -701,12 +705,17 @@ inline Candidate_cells group_candidates(const std::vector<Vec3>& points, const s
   keyed.reserve(candidates.size());
   for(std::size_t c : candidates)
     keyed.push_back(Keyed{key(c), residuals.empty() ? 0. : residuals[c], c});
-  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+  std::sort(keyed.begin(), keyed.end(), [&points](const Keyed& a, const Keyed& b) {
     if(a.key != b.key)
       return a.key < b.key;
     if(a.residual != b.residual)
       return a.residual > b.residual;
-    return a.position < b.position;
+    // Neighbours with the same neighbourhood have the same residual: ties are common. Broken
+    // by coordinates, not by position in the spatial order, so that a tile of the cloud picks
+    // the same first candidate as the whole cloud.
+    const Vec3& p = points[a.position];
+    const Vec3& q = points[b.position];
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
   });
   for(std::size_t i = 0; i < keyed.size(); ++i)
   {

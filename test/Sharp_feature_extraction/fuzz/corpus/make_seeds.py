@@ -5,6 +5,8 @@
 
 - fuzz_read_ply/binary_{little,big}_endian.ply: the same two vertices, with integer-typed x and y,
   a float z, a property before x, an element with a list before the vertices and a face after.
+- fuzz_read_las/*.las: small LAS files, one per version 1.2, 1.3 and 1.4, with point formats 0,
+  4 (with extra bytes), 6 (with a variable length record) and 10; three points each.
 - fuzz_extract_sharp_features/*.bin: inputs of fuzz_extract_sharp_features.cpp. Its
   FuzzedDataProvider reads each number from the end of the input, little endian, in the order of
   decode(); `pipeline_seed` lays them out that way.
@@ -22,6 +24,35 @@ def ply(fmt, endian):
     for x, y, z in [(1, -2, 3.25), (-4, 5, 0.125)]:
         body += struct.pack(endian + "difh", 0.5, x, z, y)
     return header + body + struct.pack(endian + "B2i", 2, 0, 1)
+
+
+# Public header size of LAS 1.2, 1.3, 1.4 and record size of point formats 0 to 10 (LAS 1.4 R15).
+LAS_HEADER_SIZE = {2: 227, 3: 235, 4: 375}
+LAS_RECORD_SIZE = [20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67]
+LAS_VLR_HEADER_SIZE = 54
+
+
+def las(minor, point_format, extra_bytes=0, vlr_payload=0):
+    points = [(0, 0, 0), (1000, -2000, 3000), (-7, 8, 2**31 - 1)]
+    header_size = LAS_HEADER_SIZE[minor]
+    vlrs = b""
+    if vlr_payload:
+        vlrs = struct.pack("<H16sHH32s", 0, b"seed", 1, vlr_payload, b"") + bytes(vlr_payload)
+    record = LAS_RECORD_SIZE[point_format] + extra_bytes
+    legacy_count = len(points) if point_format < 6 else 0
+    header = (b"LASF" + bytes(20) + bytes([1, minor]) + bytes(64) + struct.pack("<HHHII", 1, 2026, header_size,
+              header_size + len(vlrs), 1 if vlrs else 0) + struct.pack("<BHI", point_format, record, legacy_count)
+              + bytes(20) + struct.pack("<3d", 0.01, 0.01, 0.001) + struct.pack("<3d", 500000.0, 4e6, 0.0)
+              + struct.pack("<6d", 1, 0, 1, 0, 1, 0))
+    header += bytes(header_size - len(header))
+    if minor == 4:  # the 64-bit point count, at byte 247
+        header = header[:247] + struct.pack("<Q", len(points)) + header[255:]
+    body = b"".join(struct.pack("<3i", *p) + bytes(record - 12) for p in points)
+    return header + vlrs + body
+
+
+LAS_SEEDS = {"v12_format0": las(2, 0), "v13_format4_extra": las(3, 4, extra_bytes=3),
+             "v14_format6_vlr": las(4, 6, vlr_payload=10), "v14_format10": las(4, 10)}
 
 
 def number(value, size):
@@ -81,6 +112,9 @@ if __name__ == "__main__":
     for name, endian in [("little", "<"), ("big", ">")]:
         with open("fuzz_read_ply/binary_%s_endian.ply" % name, "wb") as f:
             f.write(ply("binary_%s_endian" % name, endian))
+    for name, data in LAS_SEEDS.items():
+        with open("fuzz_read_las/%s.las" % name, "wb") as f:
+            f.write(data)
     for name, data in PIPELINE_SEEDS.items():
         with open("fuzz_extract_sharp_features/%s.bin" % name, "wb") as f:
             f.write(data)
