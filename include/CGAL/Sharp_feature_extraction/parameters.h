@@ -16,6 +16,10 @@ enum rmls_tolerance_t { rmls_tolerance };
 enum corner_radius_t { corner_radius };
 enum growth_radius_t { growth_radius };
 enum completion_distance_t { completion_distance };
+enum height_field_angle_t { height_field_angle };
+enum grid_spacing_t { grid_spacing };
+enum initial_labels_t { initial_labels };
+enum quantization_step_t { quantization_step };
 } // namespace internal_np
 
 /// \ingroup PkgSharpFeatureExtractionRef
@@ -53,6 +57,19 @@ CGAL_SFE_NAMED_PARAMETER(growth_radius)
 /// Largest gap bridged by completion. Default: 7 times the sampling spacing, and at least
 /// 3 times the growth radius.
 CGAL_SFE_NAMED_PARAMETER(completion_distance)
+/// Largest angle, in degrees, between the normal of a point and the plane of its height field
+/// (`partition_into_height_fields()`). Default: 60.
+CGAL_SFE_NAMED_PARAMETER(height_field_angle)
+/// Side of a cell of the grids over which height fields are sampled
+/// (`partition_into_height_fields()`, `compress_point_cloud()`). Default: the sampling spacing.
+CGAL_SFE_NAMED_PARAMETER(grid_spacing)
+/// A label per input point (a `std::vector<std::size_t>`) from which the height-field
+/// partition starts splitting: no piece then holds points of two labels before the merge, e.g.
+/// `Surface_patches::labels`. Default: none (the split starts from the whole cloud).
+CGAL_SFE_NAMED_PARAMETER(initial_labels)
+/// Quantizer step (a distance) of the heights of `compress_point_cloud()`. Default: a
+/// hundredth of the grid spacing.
+CGAL_SFE_NAMED_PARAMETER(quantization_step)
 
 } // namespace parameters
 } // namespace Sharp_feature_extraction
