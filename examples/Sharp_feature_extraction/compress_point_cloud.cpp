@@ -48,7 +48,9 @@ const char* usage =
   "  --partition P             traditional (split from the whole cloud) or guided (split from\n"
   "                            the surface patches of the sharp features; default)\n"
   "  --height-field-angle DEG  largest angle between a normal and its height field's (60)\n"
-  "  --grid-spacing D          side of a height image cell (default: the sampling spacing)\n";
+  "  --grid-spacing D          side of a height image cell (default: the sampling spacing)\n"
+  "  --grid-scale F            side of a cell: F times the sampling spacing (default 1): coarser\n"
+  "                            grids reach lower rates\n";
 
 [[noreturn]] void fail(const std::string& message)
 {
@@ -120,7 +122,7 @@ double default_grid_spacing(const std::vector<Point>& points)
 int main(int argc, char** argv)
 {
   std::string input, output, decode, curve, reference, kind = "guided";
-  double bpp = -1, angle = CGAL::Sharp_feature_extraction::internal::default_height_field_angle, cell = 0;
+  double bpp = -1, angle = CGAL::Sharp_feature_extraction::internal::default_height_field_angle, cell = 0, scale = 1;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -138,6 +140,7 @@ int main(int argc, char** argv)
     else if(a == "--partition") kind = value();
     else if(a == "--height-field-angle") angle = number(a, value());
     else if(a == "--grid-spacing") cell = number(a, value());
+    else if(a == "--grid-scale") scale = number(a, value());
     else if(!a.empty() && a[0] == '-') fail("unknown option " + a + " (see --help)");
     else if(input.empty()) input = a;
     else fail("more than one input file given (see --help)");
@@ -174,7 +177,7 @@ int main(int argc, char** argv)
     if(points.empty())
       fail("'" + input + "' contains no points");
     if(cell <= 0)
-      cell = default_grid_spacing(points);
+      cell = scale * default_grid_spacing(points);
 
     if(!curve.empty())
     {

@@ -70,9 +70,12 @@ inline double grid_spacing_of(const Height_field_parameters& p, const Height_fie
 /// the links of every point to its 6 nearest) of the whole cloud, or of each set of points
 /// sharing an initial label, and splits a piece that is not a height field in two (at its
 /// plane when it has two layers, across its longest axis otherwise) until each is one, or
-/// holds fewer than 12 points. The merge then repeatedly joins the two linked pieces whose
-/// union is the best height field (the largest smallest cosine), while a union is one; it may
-/// join pieces of different initial labels.
+/// holds fewer than 12 points. The merge then repeatedly joins two linked pieces whose union
+/// is a height field within the bound, the most promising first (the largest smallest cosine
+/// between the union's plane normal and the normals, estimated from bins of 15 degrees), while
+/// one is; it may join pieces of different initial labels. Last, a piece of fewer than 12
+/// points joins the piece it shares most links with, height field or not (a frame would cost
+/// more than its points).
 ///
 /// With initial labels from `segment_into_patches()` (the guided partition), the pieces of
 /// the split never cross a feature curve.

@@ -14,6 +14,7 @@
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -21,7 +22,6 @@
 #include <map>
 #include <queue>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -118,27 +118,44 @@ struct Height_field_test
   }
 };
 
+/// Whether two of `cells` (cell coordinates and height, sorted or not) over one cell differ in
+/// height by more than `tolerance`.
+inline bool has_layers(std::vector<std::tuple<std::int64_t, std::int64_t, double>>& cells, double tolerance)
+{
+  std::sort(cells.begin(), cells.end());
+  for(std::size_t first = 0, last = 0; first < cells.size(); first = last)
+  {
+    while(last < cells.size() && std::get<0>(cells[last]) == std::get<0>(cells[first]) &&
+          std::get<1>(cells[last]) == std::get<1>(cells[first]))
+      ++last;
+    // Sorted by height within a cell: its first and last are its lowest and highest.
+    if(std::get<2>(cells[last - 1]) - std::get<2>(cells[first]) > tolerance)
+      return true;
+  }
+  return false;
+}
+
+/// Tests `members` against `bound`. The layers are only looked for when the normals pass (a
+/// piece that fails both is split across its longest axis).
 inline Height_field_test test_height_field(const Height_field_cloud& cloud, const std::vector<std::size_t>& members,
                                            const Height_field_bound& bound)
 {
   Height_field_test t;
   compute_principal_axes(members.size(), [&](std::size_t j) { return cloud.points[members[j]]; }, t.axes);
   const Vec3 normal = t.axes.axes.col(0), u = t.axes.axes.col(2), v = t.axes.axes.col(1);
-  std::unordered_map<std::uint64_t, std::pair<double, double>> heights;
+  for(std::size_t i : members)
+    t.smallest_cosine = (std::min)(t.smallest_cosine, std::abs(cloud.normals[i].dot(normal)));
+  if(t.smallest_cosine < bound.cos_maximum_angle)
+    return t;
+  std::vector<std::tuple<std::int64_t, std::int64_t, double>> cells;
+  cells.reserve(members.size());
   for(std::size_t i : members)
   {
-    t.smallest_cosine = (std::min)(t.smallest_cosine, std::abs(cloud.normals[i].dot(normal)));
     const Vec3 d = cloud.points[i] - t.axes.centroid;
-    const auto cu = std::int64_t(std::floor(d.dot(u) / bound.grid_spacing));
-    const auto cv = std::int64_t(std::floor(d.dot(v) / bound.grid_spacing));
-    const std::uint64_t key = (std::uint64_t(cu) << 32) ^ std::uint64_t(std::uint32_t(cv));
-    const double h = d.dot(normal);
-    auto inserted = heights.emplace(key, std::make_pair(h, h));
-    auto& range = inserted.first->second;
-    range.first = (std::min)(range.first, h);
-    range.second = (std::max)(range.second, h);
-    t.layered = t.layered || range.second - range.first > bound.layer_tolerance;
+    cells.emplace_back(std::int64_t(std::floor(d.dot(u) / bound.grid_spacing)),
+                       std::int64_t(std::floor(d.dot(v) / bound.grid_spacing)), d.dot(normal));
   }
+  t.layered = has_layers(cells, bound.layer_tolerance);
   return t;
 }
 
@@ -217,8 +234,67 @@ inline std::vector<std::vector<std::size_t>> split_into_height_fields(const Heig
   return pieces;
 }
 
-/// The merge stage: repeatedly joins the two linked pieces whose union is the best height
-/// field (largest smallest cosine), as long as a union passes `bound`.
+/// Bins of the normal directions, for the merge's estimate of a union: the half-sphere of
+/// unoriented normals in rings of `normal_bin_degrees` from the pole, each cut into sectors of
+/// the same angle. A normal lies within a bin's half-diagonal (about 11 degrees) of its centre.
+constexpr double normal_bin_degrees = 15;
+constexpr int normal_rings = 6, normal_sectors = 24; // 90 and 360 degrees in bins
+typedef std::bitset<normal_rings * normal_sectors> Normal_bins;
+
+inline std::size_t normal_bin(const Vec3& n)
+{
+  const Vec3 up = n.z() < 0 ? Vec3(-n) : n;
+  const double polar = std::acos((std::min)(1., up.z())) * 180 / CGAL_PI;
+  const double azimuth = std::atan2(up.y(), up.x()) * 180 / CGAL_PI + 180;
+  const int ring = (std::min)(normal_rings - 1, int(polar / normal_bin_degrees));
+  const int sector = (std::min)(normal_sectors - 1, int(azimuth / normal_bin_degrees));
+  return std::size_t(ring * normal_sectors + sector);
+}
+
+inline Vec3 normal_bin_centre(std::size_t bin)
+{
+  const double polar = (double(bin / normal_sectors) + 0.5) * normal_bin_degrees * CGAL_PI / 180;
+  const double azimuth = ((double(bin % normal_sectors) + 0.5) * normal_bin_degrees - 180) * CGAL_PI / 180;
+  return Vec3(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
+}
+
+/// What the merge keeps of a piece to estimate a union without visiting its points: its
+/// moments (about a fixed point of the cloud, the plane of the union from them) and its
+/// normal bins.
+struct Piece_summary
+{
+  double count = 0;
+  Vec3 sum = Vec3::Zero();
+  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero();
+  Normal_bins bins;
+
+  void add(const Piece_summary& other)
+  {
+    count += other.count;
+    sum += other.sum;
+    second_moment += other.second_moment;
+    bins |= other.bins;
+  }
+};
+
+/// The smallest |cosine| between the union's plane normal and the centres of its normal bins:
+/// the estimate of the union's `Height_field_test::smallest_cosine` that orders the merges.
+inline double estimate_smallest_cosine(Piece_summary joined)
+{
+  const Vec3 mean = joined.sum / joined.count;
+  const Eigen::Matrix3d covariance = joined.second_moment / joined.count - mean * mean.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(covariance);
+  const Vec3 normal = solver.eigenvectors().col(0).normalized();
+  double smallest = 1;
+  for(std::size_t b = 0; b < joined.bins.size(); ++b)
+    if(joined.bins[b])
+      smallest = (std::min)(smallest, std::abs(normal_bin_centre(b).dot(normal)));
+  return smallest;
+}
+
+/// The merge stage: repeatedly joins the two linked pieces whose union looks the best height
+/// field (the largest estimated smallest cosine) and passes `bound`, as long as one does.
 inline std::vector<std::vector<std::size_t>> merge_height_fields(const Height_field_cloud& cloud,
                                                                  std::vector<std::vector<std::size_t>> pieces,
                                                                  const Height_field_bound& bound, Progress& progress)
@@ -239,36 +315,47 @@ inline std::vector<std::vector<std::size_t>> merge_height_fields(const Height_fi
         ++neighbors[b][a];
       }
     }
+  std::vector<Piece_summary> summaries(pieces.size());
+  const Vec3 reference = cloud.points.empty() ? Vec3::Zero() : cloud.points.front();
+  for(std::size_t p = 0; p < pieces.size(); ++p)
+    for(std::size_t i : pieces[p])
+    {
+      const Vec3 d = cloud.points[i] - reference;
+      summaries[p].count += 1;
+      summaries[p].sum += d;
+      summaries[p].second_moment.noalias() += d * d.transpose();
+      summaries[p].bins.set(normal_bin(cloud.normals[i]));
+    }
   std::vector<std::size_t> version(pieces.size(), 0);
-  // (smallest cosine of the union, -a, -b, version of a, version of b): the best union first,
-  // ties to the smallest indices.
+  // (estimated smallest cosine of the union, -a, -b, version of a, version of b): the best
+  // union first, ties to the smallest indices. Only the best is tested exactly, when it comes
+  // first: testing every union after every merge would visit the large pieces' points again
+  // and again.
   typedef std::tuple<double, std::ptrdiff_t, std::ptrdiff_t, std::size_t, std::size_t> Candidate;
   std::priority_queue<Candidate> queue;
+  // A union whose estimate falls short of the bound by more than a bin's half-diagonal fails
+  // the exact test: it is not queued.
+  const double bin_half_diagonal = std::sqrt(2.) / 2 * normal_bin_degrees * CGAL_PI / 180;
+  const double hopeless_cosine = std::cos((std::min)(CGAL_PI / 2, std::acos(bound.cos_maximum_angle) + bin_half_diagonal));
   auto consider = [&](std::size_t a, std::size_t b) {
     if(a > b)
       std::swap(a, b);
+    Piece_summary joined = summaries[a];
+    joined.add(summaries[b]);
+    const double estimate = estimate_smallest_cosine(joined);
+    if(estimate >= hopeless_cosine)
+      queue.emplace(estimate, -std::ptrdiff_t(a), -std::ptrdiff_t(b), version[a], version[b]);
+  };
+  auto passes = [&](std::size_t a, std::size_t b) {
     std::vector<std::size_t> joined(pieces[a]);
     joined.insert(joined.end(), pieces[b].begin(), pieces[b].end());
-    const Height_field_test t = test_height_field(cloud, joined, bound);
-    if(t.passes(bound))
-      queue.emplace(t.smallest_cosine, -std::ptrdiff_t(a), -std::ptrdiff_t(b), version[a], version[b]);
+    return test_height_field(cloud, joined, bound).passes(bound);
   };
-  for(std::size_t a = 0; a < pieces.size(); ++a)
-    for(const auto& entry : neighbors[a])
-      if(a < entry.first)
-        consider(a, entry.first);
-  const std::size_t initial = pieces.size();
-  std::size_t merges = 0;
-  while(!queue.empty())
-  {
-    const Candidate best = queue.top();
-    queue.pop();
-    const std::size_t a = std::size_t(-std::get<1>(best)), b = std::size_t(-std::get<2>(best));
-    if(version[a] != std::get<3>(best) || version[b] != std::get<4>(best) || pieces[a].empty() || pieces[b].empty())
-      continue;
-    // b joins a: a keeps the smaller index.
+  // b joins a (a < b: the union keeps the smaller index).
+  auto join = [&](std::size_t a, std::size_t b) {
     pieces[a].insert(pieces[a].end(), pieces[b].begin(), pieces[b].end());
     pieces[b].clear();
+    summaries[a].add(summaries[b]);
     ++version[a];
     ++version[b];
     for(const auto& entry : neighbors[b])
@@ -281,10 +368,45 @@ inline std::vector<std::vector<std::size_t>> merge_height_fields(const Height_fi
     }
     neighbors[a].erase(b);
     neighbors[b].clear();
+  };
+  for(std::size_t a = 0; a < pieces.size(); ++a)
+    for(const auto& entry : neighbors[a])
+      if(a < entry.first)
+        consider(a, entry.first);
+  const std::size_t initial = pieces.size();
+  std::size_t merges = 0;
+  while(!queue.empty())
+  {
+    const Candidate best = queue.top();
+    queue.pop();
+    const std::size_t a = std::size_t(-std::get<1>(best)), b = std::size_t(-std::get<2>(best));
+    if(version[a] != std::get<3>(best) || version[b] != std::get<4>(best) || pieces[a].empty() ||
+       pieces[b].empty() || !passes(a, b))
+      continue;
+    join(a, b);
     for(const auto& entry : neighbors[a])
       consider(a, entry.first);
     if(!progress.report(double(++merges) / double(initial)))
       return {};
+  }
+  // A piece too small to split would cost a frame for a handful of points (often the points
+  // of a crease whose normals lean towards both sides): it joins the piece it shares most
+  // links with, whether the union is a height field or not.
+  std::size_t small = 0;
+  while(small < pieces.size())
+  {
+    if(pieces[small].empty() || pieces[small].size() >= smallest_split_piece || neighbors[small].empty())
+    {
+      ++small;
+      continue;
+    }
+    std::size_t best = neighbors[small].begin()->first;
+    for(const auto& entry : neighbors[small])
+      if(entry.second > neighbors[small][best])
+        best = entry.first;
+    join((std::min)(small, best), (std::max)(small, best));
+    // The union may still be small: it is looked at again.
+    small = (std::min)(small, best);
   }
   std::vector<std::vector<std::size_t>> merged;
   for(auto& piece : pieces)

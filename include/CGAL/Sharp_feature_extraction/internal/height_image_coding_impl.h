@@ -232,25 +232,24 @@ inline double height_at_cell(const std::vector<std::vector<std::size_t>>& cells,
   return count > 0 ? sum / double(count) : 0.;
 }
 
-/// Dilation (`grow`) or erosion by the 3 x 3 square.
-inline std::vector<std::uint8_t> morph(const std::vector<std::uint8_t>& mask, unsigned int width, unsigned int height,
-                                       bool grow)
+/// The rank filter of a mask over the 3 x 3 square: a cell is set when at least `at_least`
+/// cells of its square are (1: dilation, 9: erosion, 5: majority). Outside is unset.
+inline std::vector<std::uint8_t> rank_filter(const std::vector<std::uint8_t>& mask, unsigned int width,
+                                             unsigned int height, int at_least)
 {
   std::vector<std::uint8_t> out(mask.size(), 0);
   for(unsigned int y = 0; y < height; ++y)
     for(unsigned int x = 0; x < width; ++x)
     {
-      bool any = false, all = true;
+      int set = 0;
       for(int dy = -1; dy <= 1; ++dy)
         for(int dx = -1; dx <= 1; ++dx)
         {
           const long xx = long(x) + dx, yy = long(y) + dy;
-          const bool inside = xx >= 0 && yy >= 0 && xx < long(width) && yy < long(height);
-          const bool set = inside && mask[std::size_t(yy) * width + std::size_t(xx)];
-          any = any || set;
-          all = all && set;
+          if(xx >= 0 && yy >= 0 && xx < long(width) && yy < long(height) && mask[std::size_t(yy) * width + std::size_t(xx)])
+            ++set;
         }
-      out[std::size_t(y) * width + x] = (grow ? any : all) ? 1 : 0;
+      out[std::size_t(y) * width + x] = set >= at_least ? 1 : 0;
     }
   return out;
 }
@@ -277,7 +276,11 @@ inline Height_image resample_height_field(const std::vector<Vec3>& points, const
     occupied[std::size_t(y) * width + x] = 1;
     local.push_back(l);
   }
-  image.mask = morph(morph(occupied, width, height, true), width, height, false);
+  // Closed (holes of a cell filled), then smoothed by a majority: a ragged boundary costs
+  // mask bits and adds no point that matters.
+  constexpr int dilation = 1, erosion = 9, majority = 5;
+  image.mask = rank_filter(rank_filter(rank_filter(occupied, width, height, dilation), width, height, erosion), width,
+                           height, majority);
   image.heights.assign(cells.size(), 0.);
   for(unsigned int y = 0; y < height; ++y)
     for(unsigned int x = 0; x < width; ++x)
