@@ -10,12 +10,13 @@
 # times its sampling spacing (coarser grids reach lower rates), every quantizer step of
 # `compress_point_cloud --rate-distortion`, the distortion measured to the mesh itself.
 # Pictures: fandisk seed 1 decoded at 0.08 and 0.11 bits per point (the rates of the paper's
-# Fig. 11) on the coarsest grid, guided; the traditional partition at its lowest rates.
+# Fig. 11) on the coarsest grid, guided; the traditional partition at its lowest rates; both
+# partitions (the paper's Fig. 10), on the finest grid.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 install_missing_packages
-install_missing_packages libopenjp2-7-dev python3-matplotlib
+install_missing_packages python3-matplotlib python3-pil
 BUILD="$SFE_OUT_DIR/build-compression"
 DATA="$SFE_OUT_DIR/compression"
 RESULTS="$SFE_ROOT/benchmark/results/compression"
@@ -47,18 +48,29 @@ for cloud in fandisk:1 fandisk:2 part:1; do
 done
 
 # Decoded pictures of fandisk seed 1 on the coarsest grid.
+pictures=()
 picture() { # PARTITION BPP
   local stem="$DATA/fandisk_$1_$2"
   "$bin/compress_point_cloud" "$DATA/fandisk_200k_s1.xyz" -o "$stem.sfeh" --bpp "$2" --partition "$1" \
     --grid-scale "${grid_scales[-1]}"
   "$bin/compress_point_cloud" --decode "$stem.sfeh" -o "$stem.xyz"
   "$bin/render_feature_curves" "$stem.xyz" -o "$RESULTS/fandisk_$1_$2bpp.png" --width 800 --height 400
+  pictures+=("$RESULTS/fandisk_$1_$2bpp.png")
 }
 picture guided 0.08
 picture guided 0.11
 picture traditional 0.13
 picture traditional 0.2
 "$bin/render_feature_curves" "$DATA/fandisk_200k_s1.xyz" -o "$RESULTS/fandisk_original.png" --width 800 --height 400
+pictures+=("$RESULTS/fandisk_original.png")
+for partition in traditional guided; do
+  "$bin/compress_point_cloud" "$DATA/fandisk_200k_s1.xyz" -o "$DATA/fandisk_$partition.sfeh" --bpp 1 \
+    --partition "$partition" --partition-labels "$DATA/fandisk_$partition.labels.txt"
+  "$bin/render_feature_curves" "$DATA/fandisk_200k_s1.xyz" --patches "$DATA/fandisk_$partition.labels.txt" \
+    -o "$RESULTS/fandisk_partition_$partition.png" --width 800 --height 400
+  pictures+=("$RESULTS/fandisk_partition_$partition.png")
+done
+/usr/bin/python3 "$SFE_ROOT/benchmark/Sharp_feature_extraction/compression_report.py" --shrink "${pictures[@]}"
 
 /usr/bin/python3 "$SFE_ROOT/benchmark/Sharp_feature_extraction/compression_report.py" "$RESULTS" "${csvs[@]}" \
   > "$RESULTS/table.md"

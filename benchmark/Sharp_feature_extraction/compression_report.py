@@ -2,6 +2,7 @@
 """Rate-distortion report of the point-cloud coder (scripts/bench_compression.sh).
 
     compression_report.py OUT_DIR NAME.csv...
+    compression_report.py --shrink PICTURE.png...    (re-saves them as small optimized PNGs)
 
 Each CSV holds rows partition,step,bpp,rms,grid_scale: those of `compress_point_cloud
 --rate-distortion` (rms in bounding-box diagonals) for grids of grid_scale times the sampling
@@ -45,7 +46,17 @@ def interpolate_log_rate(curve, bpp):
     return None
 
 
+def shrink(paths):
+    """The renderer writes uncompressed PNGs: palette of 64 colours, optimized (about 10 times smaller)."""
+    from PIL import Image
+    for path in paths:
+        Image.open(path).convert("RGB").quantize(colors=64).save(path, optimize=True)
+
+
 def main():
+    if sys.argv[1] == "--shrink":
+        shrink(sys.argv[2:])
+        return
     out_dir, paths = sys.argv[1], sys.argv[2:]
     figure, axes = plt.subplots(1, len(paths), figsize=(5 * len(paths), 4), squeeze=False)
     print("| cloud | grid | guided bpp | guided rms (PSNR dB) | traditional rms at that rate (PSNR dB) | ratio | <= %.1f |"

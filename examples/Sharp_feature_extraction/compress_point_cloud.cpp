@@ -17,6 +17,7 @@
 #include <CGAL/Sharp_feature_extraction/decompress_point_cloud.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
 
+#include "utilities/command_line.h"
 #include "utilities/surface_distance.h"
 
 #include <cmath>
@@ -49,22 +50,18 @@ const char* usage =
   "                            the surface patches of the sharp features; default)\n"
   "  --height-field-angle DEG  largest angle between a normal and its height field's (60)\n"
   "  --grid-spacing D          side of a height image cell (default: the sampling spacing)\n"
+  "  --partition-labels FILE   with -o: also write the piece of every input point, one a line\n"
   "  --grid-scale F            side of a cell: F times the sampling spacing (default 1): coarser\n"
   "                            grids reach lower rates\n";
 
 [[noreturn]] void fail(const std::string& message)
 {
-  std::cerr << "compress_point_cloud: " << message << std::endl;
-  std::exit(1);
+  sfe_utilities::fail("compress_point_cloud", message);
 }
 
 double number(const std::string& option, const char* text)
 {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if(end == text || *end != '\0' || !(v >= 0))
-    fail("option " + option + " expects a non-negative number, got '" + text + "'");
-  return v;
+  return sfe_utilities::non_negative_number("compress_point_cloud", option, text);
 }
 
 /// Quantizer steps of the rate-distortion curves, in grid spacings: from 4 cells (a few
@@ -121,7 +118,7 @@ double default_grid_spacing(const std::vector<Point>& points)
 
 int main(int argc, char** argv)
 {
-  std::string input, output, decode, curve, reference, kind = "guided";
+  std::string input, output, decode, curve, reference, labels_file, kind = "guided";
   double bpp = -1, angle = CGAL::Sharp_feature_extraction::internal::default_height_field_angle, cell = 0, scale = 1;
   for(int i = 1; i < argc; ++i)
   {
@@ -138,6 +135,7 @@ int main(int argc, char** argv)
     else if(a == "--rate-distortion") curve = value();
     else if(a == "--reference-mesh") reference = value();
     else if(a == "--partition") kind = value();
+    else if(a == "--partition-labels") labels_file = value();
     else if(a == "--height-field-angle") angle = number(a, value());
     else if(a == "--grid-spacing") cell = number(a, value());
     else if(a == "--grid-scale") scale = number(a, value());
@@ -232,6 +230,14 @@ int main(int argc, char** argv)
     out.write(reinterpret_cast<const char*>(best.data()), std::streamsize(best.size()));
     if(!out)
       fail("cannot write '" + output + "'");
+    if(!labels_file.empty())
+    {
+      std::ofstream labels_out(labels_file);
+      for(std::size_t label : labels)
+        labels_out << label << '\n';
+      if(!labels_out)
+        fail("cannot write '" + labels_file + "'");
+    }
     std::cout << "wrote " << output << ": " << best.size() << " bytes, " << bits_per_point(best, points.size())
               << " bits per point (" << kind << " partition, step " << coarse << ")" << std::endl;
   }

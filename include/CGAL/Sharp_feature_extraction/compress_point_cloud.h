@@ -77,10 +77,8 @@ void compress_point_cloud(const PointRange& points, const std::vector<std::size_
   namespace sfe = Sharp_feature_extraction::internal;
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  typedef typename CGAL::GetPointMap<PointRange, NamedParameters>::const_type PointMap;
-  const PointMap point_map = choose_parameter<PointMap>(get_parameter(np, internal_np::point_map));
   const sfe::Height_field_parameters p = sfe::read_height_field_parameters(np);
-  std::vector<sfe::Vec3> read = sfe::read_input_points(points, point_map);
+  std::vector<sfe::Vec3> read = sfe::read_points_with_map(points, np);
   if(read.empty())
     throw std::invalid_argument("compress_point_cloud: no points");
   if(labels.size() != read.size())

@@ -48,6 +48,16 @@ Height_field_parameters read_height_field_parameters(const NamedParameters& np)
   return p;
 }
 
+/// The points of `points` through the `point_map` of `np`.
+/// \throws std::invalid_argument if a coordinate is not finite.
+template <typename PointRange, typename NamedParameters>
+std::vector<Vec3> read_points_with_map(const PointRange& points, const NamedParameters& np)
+{
+  typedef typename CGAL::GetPointMap<PointRange, NamedParameters>::const_type PointMap;
+  return read_input_points(points, CGAL::parameters::choose_parameter<PointMap>(
+                                     CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map)));
+}
+
 /// The grid spacing of `p` for `cloud`.
 inline double grid_spacing_of(const Height_field_parameters& p, const Height_field_cloud& cloud)
 {
@@ -128,16 +138,12 @@ std::size_t partition_into_height_fields(const PointRange& points, std::vector<s
                                          const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef typename CGAL::GetPointMap<PointRange, NamedParameters>::const_type PointMap;
-  const PointMap point_map = choose_parameter<PointMap>(get_parameter(np, internal_np::point_map));
   const sfe::Height_field_parameters p = sfe::read_height_field_parameters(np);
   labels.clear();
   sfe::Progress progress(sfe::read_callback(np));
   sfe::Height_field_cloud cloud;
   sfe::Progress indexing = progress.sub(0, 0.3);
-  if(!sfe::build_height_field_cloud<ConcurrencyTag>(sfe::read_input_points(points, point_map), indexing, cloud))
+  if(!sfe::build_height_field_cloud<ConcurrencyTag>(sfe::read_points_with_map(points, np), indexing, cloud))
     return 0;
   if(!p.initial_labels.empty() && p.initial_labels.size() != cloud.size())
     throw std::invalid_argument("partition_into_height_fields: initial_labels must hold one label per point");

@@ -35,9 +35,12 @@ constexpr std::size_t height_field_normal_neighbors = 12;
 /// Number of nearest points a point links to: the links define which pieces are neighbours
 /// and which points of a piece are connected (one ring on a uniform sample).
 constexpr std::size_t height_field_link_neighbors = 6;
-/// Pieces with fewer points are not split further: their plane would rest on less than one
-/// normal neighbourhood.
-constexpr std::size_t smallest_split_piece = height_field_normal_neighbors;
+/// Pieces with fewer points have no plane: they are height fields by definition.
+constexpr std::size_t smallest_split_piece = 3;
+/// Pieces left with fewer points after the merge are absorbed by a neighbour: a frame would
+/// cost more than their points, and they are mostly points of a crease, whose normals (the
+/// plane of neighbours on both sides) lean away from every piece.
+constexpr std::size_t smallest_piece = height_field_normal_neighbors;
 
 /// What the partition needs of the cloud: an unoriented normal per point and its links.
 struct Height_field_cloud
@@ -389,13 +392,12 @@ inline std::vector<std::vector<std::size_t>> merge_height_fields(const Height_fi
     if(!progress.report(double(++merges) / double(initial)))
       return {};
   }
-  // A piece too small to split would cost a frame for a handful of points (often the points
-  // of a crease whose normals lean towards both sides): it joins the piece it shares most
-  // links with, whether the union is a height field or not.
+  // The small pieces join the piece they share most links with, whether the union is a height
+  // field or not.
   std::size_t small = 0;
   while(small < pieces.size())
   {
-    if(pieces[small].empty() || pieces[small].size() >= smallest_split_piece || neighbors[small].empty())
+    if(pieces[small].empty() || pieces[small].size() >= smallest_piece || neighbors[small].empty())
     {
       ++small;
       continue;
