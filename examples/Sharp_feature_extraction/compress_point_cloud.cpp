@@ -15,6 +15,7 @@
 #include <CGAL/bounding_box.h>
 #include <CGAL/Sharp_feature_extraction/compress_point_cloud.h>
 #include <CGAL/Sharp_feature_extraction/decompress_point_cloud.h>
+#include <CGAL/Sharp_feature_extraction/estimate_sharp_feature_scales.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
 
 #include "utilities/command_line.h"
@@ -103,17 +104,6 @@ double bits_per_point(const std::vector<unsigned char>& bytes, std::size_t point
   return 8. * double(bytes.size()) / double(points);
 }
 
-/// The grid spacing the library derives from the points (its default), for the steps.
-double default_grid_spacing(const std::vector<Point>& points)
-{
-  namespace internal = CGAL::Sharp_feature_extraction::internal;
-  internal::Progress silent;
-  internal::Height_field_cloud cloud;
-  internal::build_height_field_cloud<Concurrency>(internal::read_input_points(points, CGAL::Identity_property_map<Point>()),
-                                                  silent, cloud);
-  return internal::grid_spacing_per_sampling_spacing * cloud.spacing;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -175,7 +165,7 @@ int main(int argc, char** argv)
     if(points.empty())
       fail("'" + input + "' contains no points");
     if(cell <= 0)
-      cell = scale * default_grid_spacing(points);
+      cell = scale * CGAL::estimate_sharp_feature_scales<Concurrency>(points).spacing;
 
     if(!curve.empty())
     {

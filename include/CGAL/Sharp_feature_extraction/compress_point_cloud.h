@@ -48,7 +48,8 @@ constexpr double default_step_per_grid_spacing = 0.01;
 ///   same `grid_spacing`); a piece that is not a height field is coded all the same, with a
 ///   larger error.
 /// \param bytes receives the bitstream (cleared first); its size is the compressed size.
-/// \param np optional named parameters among the ones listed below.
+/// \param np optional named parameters among the ones listed below; a parameter of the
+///   extraction or of the partition alone does not compile.
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{point_map}
 ///     \cgalParamDescription{a property map associating points to the elements of `points`}
@@ -75,6 +76,11 @@ void compress_point_cloud(const PointRange& points, const std::vector<std::size_
                           std::vector<unsigned char>& bytes, const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
+  static_assert(sfe::holds_no_extraction_parameters<NamedParameters>() &&
+                  sfe::holds_none_of<NamedParameters, Sharp_feature_extraction::internal_np::height_field_angle_t,
+                                     Sharp_feature_extraction::internal_np::initial_labels_t,
+                                     CGAL::internal_np::callback_t>(),
+                "compress_point_cloud: a parameter of another function");
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const sfe::Height_field_parameters p = sfe::read_height_field_parameters(np);

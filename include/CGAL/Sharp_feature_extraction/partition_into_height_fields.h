@@ -58,6 +58,17 @@ std::vector<Vec3> read_points_with_map(const PointRange& points, const NamedPara
                                      CGAL::parameters::get_parameter(np, CGAL::internal_np::point_map)));
 }
 
+/// Whether `NamedParameters` holds none of the parameters of the extraction's stages and scales,
+/// which would have no effect on the height fields and their coding.
+template <typename NamedParameters>
+constexpr bool holds_no_extraction_parameters()
+{
+  return holds_none_of<NamedParameters, CGAL_SFE_SCALE_PARAMETER_TAGS, CGAL::internal_np::degree_fitting_t,
+                       CGAL::internal_np::threshold_distance_t, CGAL::internal_np::sharpness_angle_t,
+                       CGAL::internal_np::number_of_iterations_t, CGAL::internal_np::maximum_angle_t,
+                       CGAL::internal_np::number_of_relaxation_steps_t>();
+}
+
 /// The grid spacing of `p` for `cloud`.
 inline double grid_spacing_of(const Height_field_parameters& p, const Height_field_cloud& cloud)
 {
@@ -99,7 +110,8 @@ inline double grid_spacing_of(const Height_field_parameters& p, const Height_fie
 /// \param points the input points.
 /// \param labels receives the piece of every input point, in input order; pieces are numbered
 ///   from 0 in the order of their first point.
-/// \param np optional named parameters among the ones listed below.
+/// \param np optional named parameters among the ones listed below; a parameter of the
+///   extraction or of `compress_point_cloud()` alone does not compile.
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{point_map}
 ///     \cgalParamDescription{a property map associating points to the elements of `points`}
@@ -138,6 +150,9 @@ std::size_t partition_into_height_fields(const PointRange& points, std::vector<s
                                          const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
+  static_assert(sfe::holds_no_extraction_parameters<NamedParameters>() &&
+                  sfe::holds_none_of<NamedParameters, Sharp_feature_extraction::internal_np::quantization_step_t>(),
+                "partition_into_height_fields: a parameter of another function");
   const sfe::Height_field_parameters p = sfe::read_height_field_parameters(np);
   labels.clear();
   sfe::Progress progress(sfe::read_callback(np));
