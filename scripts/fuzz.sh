@@ -4,8 +4,9 @@
 #
 #   bash scripts/fuzz.sh SECONDS [TARGET...]     # default: every target
 #
-# Targets: fuzz_read_polylines, fuzz_read_xyz, fuzz_read_ply, fuzz_read_off, fuzz_read_las (the readers of
-# the package and of its program) and fuzz_extract_sharp_features (the whole pipeline).
+# Targets: fuzz_read_polylines, fuzz_read_xyz, fuzz_read_ply, fuzz_read_off, fuzz_read_las (the
+# readers of the package and of its program), fuzz_extract_sharp_features (the whole pipeline)
+# and fuzz_decompress_point_cloud (the decoder of the point-cloud coder, over OpenJPEG).
 # Each starts from its seeds in test/Sharp_feature_extraction/fuzz/corpus/TARGET and grows a
 # corpus of its own in out/fuzz/corpus/TARGET, kept between runs. Runs SFE_FUZZ_PARALLEL targets
 # at once (default 2), each under `nice -n 10`. Exits non-zero if any target found a crash, a
@@ -19,7 +20,8 @@ usage="usage: bash scripts/fuzz.sh SECONDS [TARGET...]"
 seconds="$1"
 shift
 [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || sfe_die "SECONDS must be a positive integer ($usage)"
-all_targets=(fuzz_read_polylines fuzz_read_xyz fuzz_read_ply fuzz_read_off fuzz_read_las fuzz_extract_sharp_features)
+all_targets=(fuzz_read_polylines fuzz_read_xyz fuzz_read_ply fuzz_read_off fuzz_read_las
+             fuzz_extract_sharp_features fuzz_decompress_point_cloud)
 targets=("$@")
 [ "${#targets[@]}" -gt 0 ] || targets=("${all_targets[@]}")
 for target in "${targets[@]}"; do
@@ -35,7 +37,7 @@ pipeline_timeout_seconds=600
 rss_limit_mb=2048
 
 install_missing_packages build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev \
-  clang libclang-rt-14-dev
+  pkg-config libopenjp2-7-dev clang libclang-rt-14-dev
 
 fuzz_source="$SFE_ROOT/test/Sharp_feature_extraction/fuzz"
 fuzz_out="$SFE_OUT_DIR/fuzz"

@@ -13,6 +13,7 @@
 #include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
 
+#include "utilities/command_line.h"
 #include "utilities/progress_bar.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -55,17 +56,12 @@ const char* usage =
 
 [[noreturn]] void fail(const std::string& message)
 {
-  std::cerr << "extract_sharp_features: " << message << std::endl;
-  std::exit(1);
+  sfe_utilities::fail("extract_sharp_features", message);
 }
 
 double number(const std::string& option, const char* text)
 {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if(end == text || *end != '\0' || !(v >= 0))
-    fail("option " + option + " expects a non-negative number, got '" + text + "'");
-  return v;
+  return sfe_utilities::non_negative_number("extract_sharp_features", option, text);
 }
 
 /// One line per point: its patch, or -1.

@@ -17,6 +17,10 @@ enum corner_radius_t { corner_radius };
 enum growth_radius_t { growth_radius };
 enum completion_distance_t { completion_distance };
 enum number_of_tiles_t { number_of_tiles };
+enum height_field_angle_t { height_field_angle };
+enum grid_spacing_t { grid_spacing };
+enum initial_labels_t { initial_labels };
+enum quantization_step_t { quantization_step };
 } // namespace internal_np
 
 /// \ingroup PkgSharpFeatureExtractionRef
@@ -57,6 +61,19 @@ CGAL_SFE_NAMED_PARAMETER(completion_distance)
 /// The least number of tiles `extract_sharp_features_in_tiles()` cuts the cloud into.
 /// Default: 8.
 CGAL_SFE_NAMED_PARAMETER(number_of_tiles)
+/// Largest angle, in degrees, between the normal of a point and the plane of its height field
+/// (`partition_into_height_fields()`). Default: 60.
+CGAL_SFE_NAMED_PARAMETER(height_field_angle)
+/// Side of a cell of the grids over which height fields are sampled
+/// (`partition_into_height_fields()`, `compress_point_cloud()`). Default: the sampling spacing.
+CGAL_SFE_NAMED_PARAMETER(grid_spacing)
+/// A label per input point (a `std::vector<std::size_t>`) from which the height-field
+/// partition starts splitting: no piece then holds points of two labels before the merge, e.g.
+/// `Surface_patches::labels`. Default: none (the split starts from the whole cloud).
+CGAL_SFE_NAMED_PARAMETER(initial_labels)
+/// Quantizer step (a distance) of the heights of `compress_point_cloud()`. Default: a
+/// hundredth of the grid spacing.
+CGAL_SFE_NAMED_PARAMETER(quantization_step)
 
 } // namespace parameters
 } // namespace Sharp_feature_extraction

@@ -10,6 +10,10 @@
 - fuzz_extract_sharp_features/*.bin: inputs of fuzz_extract_sharp_features.cpp. Its
   FuzzedDataProvider reads each number from the end of the input, little endian, in the order of
   decode(); `pipeline_seed` lays them out that way.
+
+Not written here: fuzz_decompress_point_cloud/fandisk_600.sfeh, a bitstream of the point-cloud
+coder (`compress_point_cloud fandisk_600.xyz -o fandisk_600.sfeh --bpp 8 --partition traditional`,
+the cloud from `sample_mesh_surface fandisk.off -n 600 --seed 3`).
 """
 import struct
 
