@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Surface patches (paper 3.6): the points split into the regions that the feature curves
-// enclose. Regions grow over the points outside the crease bands; the points of a band join
-// the region on their side of the crease.
+// enclose. Regions grow over the points that lie clearly on one side of every crease (outside
+// the crease bands, or in a band but clearly nearer one of its surfaces), along links that stay
+// on one side; the points of a band within the blur of the crease join the region on their side.
 
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
@@ -20,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -35,10 +37,15 @@ struct Patch_constants
   static constexpr std::size_t linked_neighbors = 6;
   /// Links longer than this many spacings are not surface: they reach outliers.
   static constexpr double longest_link = 3;
-  /// A point of a crease band takes the region of the nearest point outside the bands on its
-  /// side, among this many nearest outside the bands (those on the other side are about as
-  /// near: a few times the number of linked neighbours).
+  /// A point of a crease band whose side is not clear takes the region of the nearest clear
+  /// point on its side, among this many nearest clear points (those on the other side are about
+  /// as near: a few times the number of linked neighbours).
   static constexpr std::size_t band_candidates = 32;
+  /// A point of a crease band lies clearly on one side when it is closer to the surface of that
+  /// side than to the next by this many spacings plus `side_clearance_noises` noise scales:
+  /// nearer the crease, the sampling and the noise blur the sides.
+  static constexpr double side_clearance_spacings = 1;
+  static constexpr double side_clearance_noises = 2;
   /// Regions with fewer points than a stage-2 neighbourhood are not faces (the forward search
   /// could not have found them as surfaces): they merge into the neighbour they share most
   /// links with.
@@ -80,6 +87,9 @@ struct Crease_side
 {
   std::size_t landmark = no_index;
   std::size_t side = 0;
+  /// Whether the point lies clearly on its side: outside the band, or closer to the surface of
+  /// its side than to the next by a margin (see `Patch_constants::side_clearance_spacings`).
+  bool clear = true;
 };
 
 /// The places that tell the sides of the creases: every curve vertex, with the normals of its
@@ -134,9 +144,22 @@ public:
     return closest;
   }
 
+  /// How much closer `x` is to the surface of `landmark` it lies on than to the next closest.
+  double clearance(std::size_t landmark, const Vec3& x) const
+  {
+    const Vec3 d = x - point(landmark);
+    std::vector<double> distances;
+    for(const Vec3& n : m_normals[landmark])
+      distances.push_back(std::abs(n.dot(d)));
+    if(distances.size() < 2)
+      return std::numeric_limits<double>::infinity();
+    std::partial_sort(distances.begin(), distances.begin() + 2, distances.end());
+    return distances[1] - distances[0];
+  }
+
   /// Where `x` lies: by the nearest corner within `band`, else by the nearest curve vertex
-  /// within `band`.
-  Crease_side locate(const Vec3& x, double band, std::vector<std::size_t>& scratch) const
+  /// within `band`; clearly on its side if its clearance is `margin` or more.
+  Crease_side locate(const Vec3& x, double band, double margin, std::vector<std::size_t>& scratch) const
   {
     Crease_side where;
     m_corner_index.nearest(x, 1, scratch);
@@ -149,7 +172,10 @@ public:
         where.landmark = scratch.front();
     }
     if(where.landmark != no_index)
+    {
       where.side = side(where.landmark, x);
+      where.clear = clearance(where.landmark, x) >= margin;
+    }
     return where;
   }
 
@@ -187,10 +213,13 @@ struct Patch_labels
   std::size_t number_of_patches = 0;
 };
 
-/// The regions of the points outside the crease bands: a point links to its
-/// `linked_neighbors` nearest within `longest_link` spacings, and the regions are the
-/// connected sets of points outside the bands. A band is wider than a link, so no link between
-/// two points outside the bands crosses a crease. Returns false if cancelled.
+/// The regions of the points that lie clearly on their side: a point links to its
+/// `linked_neighbors` nearest within `longest_link` spacings, and the regions are the sets
+/// connected by the links that stay on one side (a band is wider than a link, so a link between
+/// two points outside the bands crosses no crease; a link with an end in a band is kept when
+/// that end lies clearly on its side and the crease there puts the other end on the same side).
+/// A strip between two close creases, narrower than two bands, is a region of its own; a face
+/// pinched by the bands of two curves stays one. Returns false if cancelled.
 template <typename ConcurrencyTag>
 bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
                   Progress progress, Patch_labels& labels, std::vector<std::vector<std::size_t>>& links)
@@ -202,11 +231,13 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   links.assign(n, {});
   const double band = scales.growth_radius;
   const double longest = Constants::longest_link * scales.spacing;
+  const double margin = Constants::side_clearance_spacings * scales.spacing
+                        + Constants::side_clearance_noises * scales.noise;
   if(!parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> scratch;
        for(std::size_t i = first; i < last; ++i)
        {
-         labels.where[i] = landmarks.locate(points[i], band, scratch);
+         labels.where[i] = landmarks.locate(points[i], band, margin, scratch);
          input.index.nearest(points[i], Constants::linked_neighbors + 1, scratch);
          for(std::size_t j : scratch)
            if(j != i && (points[j] - points[i]).norm() <= longest)
@@ -214,59 +245,62 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
        }
      }))
     return false;
-  auto outside_bands = [&](std::size_t i) { return labels.where[i].landmark == no_index; };
+  // a link stays on one surface when each of its ends in a band lies clearly on its side and
+  // sees the other end on that side
+  auto sees_on_its_side = [&](std::size_t i, std::size_t j) {
+    const Crease_side& where = labels.where[i];
+    return where.landmark == no_index || (where.clear && landmarks.side(where.landmark, points[j]) == where.side);
+  };
   Disjoint_sets sets(n);
   for(std::size_t i = 0; i < n; ++i)
-    if(outside_bands(i))
-      for(std::size_t j : links[i])
-        if(outside_bands(j))
-          sets.unite(i, j);
+    for(std::size_t j : links[i])
+      if(sees_on_its_side(i, j) && sees_on_its_side(j, i))
+        sets.unite(i, j);
   labels.label.assign(n, no_index);
   for(std::size_t i = 0; i < n; ++i)
-    if(outside_bands(i))
+    if(labels.where[i].clear)
       labels.label[i] = sets.find(i);
   return true;
 }
 
-/// Gives every point of a crease band the region of the nearest point outside the bands that
-/// lies on its side of the crease (among the `band_candidates` nearest outside the bands; a
-/// point outside the bands is far enough from the crease for its side to be clear, while a
-/// point in the band, within the noise of the crease, may lie on either). Points with no such
+/// Gives every point of a crease band whose side is not clear the region of the nearest clear
+/// point that lies on its side of the crease (among the `band_candidates` nearest clear points:
+/// a point within the noise of the crease may lie on either side). Points with no such
 /// neighbour keep no region. Returns false if cancelled.
 template <typename ConcurrencyTag>
 bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks& landmarks, Progress progress,
                         Patch_labels& labels)
 {
-  std::vector<std::size_t> outside;
-  std::vector<Vec3> outside_points;
+  std::vector<std::size_t> clear;
+  std::vector<Vec3> clear_points;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(labels.where[i].landmark == no_index)
+    if(labels.where[i].clear)
     {
-      outside.push_back(i);
-      outside_points.push_back(points[i]);
+      clear.push_back(i);
+      clear_points.push_back(points[i]);
     }
   Point_index index;
-  index.build<ConcurrencyTag>(outside_points);
+  index.build<ConcurrencyTag>(clear_points);
   std::vector<std::size_t> assigned(points.size(), no_index);
   if(!parallel_blocks<ConcurrencyTag>(points.size(), progress, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> nearest;
        for(std::size_t i = first; i < last; ++i)
        {
          const Crease_side& where = labels.where[i];
-         if(where.landmark == no_index)
+         if(where.clear)
            continue;
          index.nearest(points[i], Patch_constants::band_candidates, nearest);
          for(std::size_t k : nearest)
-           if(landmarks.side(where.landmark, outside_points[k]) == where.side)
+           if(landmarks.side(where.landmark, clear_points[k]) == where.side)
            {
-             assigned[i] = labels.label[outside[k]];
+             assigned[i] = labels.label[clear[k]];
              break;
            }
        }
      }))
     return false;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(labels.where[i].landmark != no_index)
+    if(!labels.where[i].clear)
       labels.label[i] = assigned[i];
   return true;
 }
