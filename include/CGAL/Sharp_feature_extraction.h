@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The whole package: the extraction context, every stage function, the function that runs
-// them all, and the I/O.
+// them all, the tiled extraction, the patches and the height-field partition, the Mesh_3 check
+// and repair of polylines, and the polyline I/O. Not included, because they need more than
+// CGAL: the surface reconstruction (Mesh_3 and Poisson), the point-cloud coder (OpenJPEG); and
+// not the point readers (IO/read_point_cloud.h, IO/read_LAS_points.h, IO/write_LAS_points.h).
 
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_H
@@ -18,6 +21,14 @@
 #include <CGAL/Sharp_feature_extraction/complete_feature_polylines.h>
 #include <CGAL/Sharp_feature_extraction/segment_into_patches.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/estimate_sharp_feature_scales_for_tiles.h>
+#include <CGAL/Sharp_feature_extraction/tile_halo_width.h>
+#include <CGAL/Sharp_feature_extraction/extract_tile_features.h>
+#include <CGAL/Sharp_feature_extraction/stitch_tile_features.h>
+#include <CGAL/Sharp_feature_extraction/extract_sharp_features_in_tiles.h>
+#include <CGAL/Sharp_feature_extraction/partition_into_height_fields.h>
+#include <CGAL/Sharp_feature_extraction/find_mesh_3_polyline_problems.h>
+#include <CGAL/Sharp_feature_extraction/repair_polylines_for_mesh_3.h>
 #include <CGAL/Sharp_feature_extraction/IO/read_polylines.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_polylines.h>
 #include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
