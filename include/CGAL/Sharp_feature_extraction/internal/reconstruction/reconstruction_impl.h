@@ -37,7 +37,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -212,21 +211,6 @@ oriented_normals(const std::vector<typename GeomTraits::Point_3>& points, Progre
   return pwn;
 }
 
-/// the two sides of every crease of `creases` facing outward, and each crease convex or concave,
-/// as the oriented normals `pwn` say.
-template <typename GeomTraits>
-void orient_crease_model(Crease_model<GeomTraits>& creases,
-                         const std::vector<Point_with_normal<typename GeomTraits::Point_3>>& pwn)
-{
-  std::vector<typename GeomTraits::Point_3> oriented_points;
-  std::vector<typename GeomTraits::Vector_3> oriented_normals;
-  for(const auto& p : pwn) {
-    oriented_points.push_back(p.first);
-    oriented_normals.push_back(p.second);
-  }
-  creases.orient(oriented_points, oriented_normals);
-}
-
 /// the polylines onto the crease of the fitted patches (ends stay: they may be shared), and the
 /// normals near them replaced by the normals of their own side.
 template <typename GeomTraits>
@@ -251,7 +235,13 @@ void use_crease_model(Crease_model<GeomTraits>& creases, std::vector<Feature_pol
       p.second = (n * p.second < 0) ? -n : n;
       ++report.corrected_normals;
     }
-  orient_crease_model(creases, pwn);
+  std::vector<Point_3> oriented_points;
+  std::vector<Vector_3> oriented_normals;
+  for(const auto& p : pwn) {
+    oriented_points.push_back(p.first);
+    oriented_normals.push_back(p.second);
+  }
+  creases.orient(oriented_points, oriented_normals);
 }
 
 /// Mesh_3's domain: a sphere around the cloud (its bounding cube, in fact). Mesh_3 finds its
@@ -311,9 +301,9 @@ void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curv
   projection.minimum_length = C::minimum_polyline_length * s;
   Polyline_projection_counts counts;
   project_polylines_onto_surface(curves, function, projection, counts);
-  report.moved_onto_surface += counts.moved_onto_surface;
-  report.cut_off_surface += counts.cut_off_surface;
-  report.cut_near_other_sheet += counts.cut_near_other_sheet;
+  report.moved_onto_surface = counts.moved_onto_surface;
+  report.cut_off_surface = counts.cut_off_surface;
+  report.cut_near_other_sheet = counts.cut_near_other_sheet;
   report.repair.output_polylines = report.repair.output_polylines + curves.size() - before;
   mesh_polylines::drop_polylines_in_contact(curves, C::repair_tolerance * s, report.repair);
 }
@@ -412,20 +402,8 @@ reconstruct(const std::vector<typename GeomTraits::Point_3>& points, const Featu
   function.base = &poisson;
   function.creases = settings.sharpen_creases ? &creases : nullptr;
   function.base_scale = 1. / gradient_norm(poisson, pwn, s);
-  // Where a curve is cut, Mesh_3 no longer protects it, and the function must not stay sharp
-  // there: an unprotected crease meeting the end of a protected curve made Mesh_3 refine without
-  // end (pinion, 25k points, noise 0, seed 1: shortest edge 2e-11). So the creases are fitted
-  // again to the protected curves, and these are moved onto the new function.
-  std::unique_ptr<Crease_model<GeomTraits>> protected_creases;
-  if(settings.protect_polylines) {
+  if(settings.protect_polylines)
     prepare_protected_polylines(curves, function, s, report);
-    if(settings.sharpen_creases && report.cut_off_surface + report.cut_near_other_sheet > 0) {
-      protected_creases.reset(new Crease_model<GeomTraits>(curves, points, Crease_model_options::for_spacing(s)));
-      orient_crease_model(*protected_creases, pwn);
-      function.creases = protected_creases.get();
-      prepare_protected_polylines(curves, function, s, report);
-    }
-  }
   report.remaining_polyline_problems =
     mesh_polylines::find_contract_violations(curves, mesh_polylines::Contract_tolerances{repair.tolerance});
   const typename GeomTraits::Sphere_3 bound = bounding_sphere<GeomTraits>(points, function, pwn, s);
