@@ -75,6 +75,15 @@ inline double curve_length(const Working_polyline& c)
   return length;
 }
 
+/// Whether curve `c` turns by more than `Completion_constants::sharp_turn_angle` at its interior
+/// vertex `v`; a segment of length zero has no direction and makes no turn.
+inline bool turns_sharply(const Working_polyline& c, std::size_t v)
+{
+  const Vec3 a = c.points[v] - c.points[v - 1], b = c.points[v + 1] - c.points[v];
+  return a.norm() > 0 && b.norm() > 0
+         && a.normalized().dot(b.normalized()) < std::cos(radians(Completion_constants::sharp_turn_angle));
+}
+
 /// The least-squares line through `points` (at least two): their centroid and unit principal
 /// direction; false if the direction is undefined (coincident points).
 inline bool fit_line(const std::vector<Vec3>& points, Vec3& centroid, Vec3& direction)
@@ -606,13 +615,10 @@ private:
   // appended to the list, a reopened loop keeps its index).
   bool split_first_sharp_turn(std::size_t c)
   {
-    const double cos_turn = std::cos(radians(Constants::sharp_turn_angle));
     const Working_polyline& curve = m_net.polylines[c];
     for(std::size_t v = 1; v + 1 < curve.points.size(); ++v)
     {
-      const Vec3 a = (curve.points[v] - curve.points[v - 1]).normalized();
-      const Vec3 b = (curve.points[v + 1] - curve.points[v]).normalized();
-      if(a.dot(b) < cos_turn)
+      if(turns_sharply(curve, v))
       {
         const std::size_t corner = add_corner(curve.points[v], curve.normals[v]);
         split_at(c, v, corner);
@@ -698,18 +704,13 @@ private:
   // that Mesh_3 would round off (and that the Mesh_3 step would split into a one-segment curve).
   void drop_sharp_end_vertices(Working_polyline& c) const
   {
-    const double cos_turn = std::cos(radians(Constants::sharp_turn_angle));
-    auto turns_sharply = [&](std::size_t v) {
-      const Vec3 a = c.points[v] - c.points[v - 1], b = c.points[v + 1] - c.points[v];
-      return a.norm() > 0 && b.norm() > 0 && a.normalized().dot(b.normalized()) < cos_turn;
-    };
     auto erase_vertex = [&](std::size_t v) {
       c.points.erase(c.points.begin() + std::ptrdiff_t(v));
       c.normals.erase(c.normals.begin() + std::ptrdiff_t(v));
     };
-    while(c.front_corner != no_index && c.points.size() > 2 && turns_sharply(1))
+    while(c.front_corner != no_index && c.points.size() > 2 && turns_sharply(c, 1))
       erase_vertex(1);
-    while(c.back_corner != no_index && c.points.size() > 2 && turns_sharply(c.points.size() - 2))
+    while(c.back_corner != no_index && c.points.size() > 2 && turns_sharply(c, c.points.size() - 2))
       erase_vertex(c.points.size() - 2);
   }
 
