@@ -24,7 +24,8 @@ namespace CGAL {
 /// whose side is not clear takes the region of the nearest clear point on its side. Two regions
 /// whose surfaces, fitted on either side of the links between them over a stage-2
 /// neighbourhood (`Sharp_feature_scales::rmls_neighbors`), have normals within 15 degrees
-/// along at least 4 in 5 of those links are pieces of one face and join (a face pinched
+/// along at least 4 in 5 of those links (a link that a crease band sees cross to another side
+/// counts against) are pieces of one face and join (a face pinched
 /// between the bands of two curves, or cut by the surfaces of a corner extended). Regions
 /// smaller than a stage-2 neighbourhood merge into the region they share most links with; those
 /// without links (outliers) stay unassigned. Two patches are adjacent along a curve when each

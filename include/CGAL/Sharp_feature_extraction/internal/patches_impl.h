@@ -358,13 +358,15 @@ inline bool region_normal_around(const Indexed_input& input, const std::vector<s
 
 /// Joins the regions that meet without a crease between them: two regions whose surfaces, on
 /// either side of the links between them, have normals within `Patch_constants::crease_angle`
-/// along most of those links. Such regions are pieces of one face that a crease band cut
+/// along most of those links (a link that a crease band sees cross to another side counts as
+/// crossing a crease whatever the normals: where noise blurs a crease, the fitted normals of
+/// its two faces can come closer than the angle). Such regions are pieces of one face that a crease band cut
 /// apart where it left no clear point across it: a face pinched between the bands of two close
 /// curves (a tooth tip of a gear), or beside a corner whose surfaces, extended, cut through it.
 /// The normals are fitted over a stage-2 neighbourhood (`rmls_neighbors`), which the forward
 /// search found large enough to fit a surface through the noise. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool join_regions_without_crease(const Indexed_input& input, const Scales& scales,
+bool join_regions_without_crease(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
                                  const std::vector<std::vector<std::size_t>>& links, Progress progress,
                                  Patch_labels& labels)
 {
@@ -393,7 +395,13 @@ bool join_regions_without_crease(const Indexed_input& input, const Scales& scale
   std::vector<std::size_t> position_in_boundary(n, no_index);
   for(std::size_t k = 0; k < boundary.size(); ++k)
     position_in_boundary[boundary[k]] = k;
-  // votes[(a, b)]: links between regions a < b whose two normals agree, and those that do not
+  // a link crosses a crease where one of its ends lies in a band and sees the other on another side
+  auto crosses_a_crease = [&](std::size_t i, std::size_t j) {
+    const Crease_side& where = labels.where[i];
+    return where.landmark != no_index && landmarks.side(where.landmark, input.points[j]) != where.side;
+  };
+  // votes[(a, b)]: links between regions a < b that cross no crease and whose two normals agree,
+  // and the others
   std::map<std::pair<std::size_t, std::size_t>, std::array<std::size_t, 2>> votes;
   const double cos_crease = std::cos(radians(Patch_constants::crease_angle));
   for(std::size_t k = 0; k < boundary.size(); ++k)
@@ -403,7 +411,8 @@ bool join_regions_without_crease(const Indexed_input& input, const Scales& scale
     {
       if(!across(i, j) || !has_normal[k] || !has_normal[position_in_boundary[j]])
         continue;
-      const bool smooth = std::abs(normals[k].dot(normals[position_in_boundary[j]])) >= cos_crease;
+      const bool smooth = !crosses_a_crease(i, j) && !crosses_a_crease(j, i)
+                          && std::abs(normals[k].dot(normals[position_in_boundary[j]])) >= cos_crease;
       ++votes[{(std::min)(label[i], label[j]), (std::max)(label[i], label[j])}][smooth ? 0 : 1];
     }
   }
@@ -603,7 +612,7 @@ bool segment_patches(const Indexed_input& input, const Working_network& network,
   std::vector<std::vector<std::size_t>> links;
   if(!grow_regions<ConcurrencyTag>(input, landmarks, scales, progress.sub(0, 0.6), labels, clear, links)
      || !assign_band_points<ConcurrencyTag>(input.points, landmarks, clear, progress.sub(0.6, 0.75), labels)
-     || !join_regions_without_crease<ConcurrencyTag>(input, scales, links, progress.sub(0.75, 0.9), labels))
+     || !join_regions_without_crease<ConcurrencyTag>(input, landmarks, scales, links, progress.sub(0.75, 0.9), labels))
     return false;
   const std::size_t smallest =
     std::size_t(Patch_constants::smallest_patch_per_rmls_neighbors * double(scales.rmls_neighbors));
