@@ -18,7 +18,9 @@ namespace CGAL {
 /// carries) that passes closest to it; it lies there clearly when that surface is nearer than
 /// the next by a spacing plus twice the noise. Every point that lies clearly on its side (or
 /// outside the bands) links to its 6 nearest such points within 3 spacings (longer links reach
-/// outliers), and the regions are the sets connected by the links that stay on one side: no
+/// outliers), and the regions are the sets connected by the links that stay on one side and
+/// whose ends are among the 12 nearest of each other (an outlier near a surface is not among the
+/// nearest of the surface points, so outliers do not bridge two faces): no
 /// region crosses a curve, a crease that fades out does not split a face (the regions join
 /// around its end), and a strip between two close creases is a region of its own. A point
 /// whose side is not clear takes the region of the nearest clear point on its side. Two regions

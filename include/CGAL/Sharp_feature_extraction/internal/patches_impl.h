@@ -38,6 +38,12 @@ struct Patch_constants
   static constexpr std::size_t linked_neighbors = 6;
   /// Links longer than this many spacings are not surface: they reach outliers.
   static constexpr double longest_link = 3;
+  /// A link grows a region only if its ends are among the this many nearest points of each
+  /// other: an outlier floating near a surface has surface points among its nearest, but no
+  /// surface point has it among its own (they are on the surface, nearer), so that outliers do
+  /// not bridge two faces across their crease. Twice the linked neighbours: the strict mutual
+  /// neighbours cut narrow strips apart.
+  static constexpr std::size_t mutual_neighbors = 2 * linked_neighbors;
   /// A point of a crease band whose side is not clear takes the region of the nearest clear
   /// point on its side, among this many nearest clear points (those on the other side are about
   /// as near: a few times the number of linked neighbours).
@@ -239,7 +245,8 @@ struct Clear_points
 /// the sets connected by the links that stay on one side (a band is wider than a link, so a
 /// link between two points outside the bands crosses no crease; a link with an end in a band is
 /// kept when that end lies clearly on its side and the crease there puts the other end on the
-/// same side). A point whose side is not clear links to its nearest points of any kind, for the
+/// same side, and each end is among the `mutual_neighbors` nearest of the other: outliers do not
+/// bridge faces). A point whose side is not clear links to its nearest points of any kind, for the
 /// merging of small regions only. A strip between two close creases, narrower than two bands,
 /// is a region of its own; a face pinched by the bands of two curves stays one. Returns false
 /// if cancelled.
@@ -258,6 +265,8 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   const double margin = Constants::side_clearance_spacings * scales.spacing
                         + Constants::side_clearance_noises * scales.noise;
   Progress locating = progress.sub(0, 0.5), linking = progress.sub(0.5, 1);
+  // nearest[i]: the `mutual_neighbors` nearest points of i (clear ones if i is clear) within a link
+  std::vector<std::vector<std::size_t>> nearest(n);
   if(!parallel_blocks<ConcurrencyTag>(n, locating, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> scratch;
        for(std::size_t i = first; i < last; ++i)
@@ -277,18 +286,21 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
        for(std::size_t i = first; i < last; ++i)
        {
          const bool is_clear = labels.where[i].clear;
-         (is_clear ? clear.index : input.index).nearest(points[i], Constants::linked_neighbors + 1, scratch);
+         (is_clear ? clear.index : input.index).nearest(points[i], Constants::mutual_neighbors + 1, scratch);
          for(std::size_t k : scratch)
          {
            const std::size_t j = is_clear ? clear.positions[k] : k;
-           if(j != i && (points[j] - points[i]).norm() <= longest)
+           if(j == i || (points[j] - points[i]).norm() > longest)
+             continue;
+           if(links[i].size() < Constants::linked_neighbors)
              links[i].push_back(j);
+           nearest[i].push_back(j);
          }
        }
      }))
     return false;
   // a link stays on one surface when each of its ends in a band lies clearly on its side and
-  // sees the other end on that side
+  // sees the other end on that side; it grows a region when its ends are mutual near neighbours
   auto sees_on_its_side = [&](std::size_t i, std::size_t j) {
     const Crease_side& where = labels.where[i];
     return where.landmark == no_index
@@ -298,7 +310,8 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   Disjoint_sets sets(n);
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t j : links[i])
-      if(sees_on_its_side(i, j) && sees_on_its_side(j, i))
+      if(std::find(nearest[j].begin(), nearest[j].end(), i) != nearest[j].end() && sees_on_its_side(i, j)
+         && sees_on_its_side(j, i))
         sets.unite(i, j);
   labels.label.assign(n, no_index);
   for(std::size_t i = 0; i < n; ++i)
@@ -440,8 +453,10 @@ bool join_regions_without_crease(const Indexed_input& input, const Crease_landma
     {
       const std::size_t x = sets.find(pair.first), y = sets.find(pair.second);
       if((x == a && y == b) || (x == b && y == a))
-        for(std::size_t k : {0, 1})
-          between[k] += count[k];
+      {
+        between[0] += count[0];
+        between[1] += count[1];
+      }
     }
     if(mostly_smooth(between))
       sets.unite(a, b);
