@@ -24,37 +24,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace IO {
-
-/// \ingroup PkgSharpFeatureExtractionIORef
-/// The colour of surface patch `patch` in the files and pictures of this package: hues a golden
-/// angle apart (so that patches of neighbouring indices differ most), saturated and bright;
-/// mid grey for `Surface_patches::unassigned`. It depends on the index only.
-/// \returns red, green and blue in [0, 255].
-inline std::array<unsigned char, 3> patch_colour(std::size_t patch)
-{
-  if(patch == (std::numeric_limits<std::size_t>::max)())
-    return {128, 128, 128};
-  // The fractional part of patch / golden ratio: consecutive hues stay far apart however many.
-  const double golden_fraction = 0.6180339887498949;
-  const double hue = 6 * std::fmod(double(patch) * golden_fraction, 1.);
-  const double saturation = 0.75, value = 0.95;
-  const double sector = std::floor(hue), f = hue - sector;
-  const double p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
-  double rgb[3];
-  switch(int(sector) % 6)
-  {
-  case 0: rgb[0] = value; rgb[1] = t; rgb[2] = p; break;
-  case 1: rgb[0] = q; rgb[1] = value; rgb[2] = p; break;
-  case 2: rgb[0] = p; rgb[1] = value; rgb[2] = t; break;
-  case 3: rgb[0] = p; rgb[1] = q; rgb[2] = value; break;
-  case 4: rgb[0] = t; rgb[1] = p; rgb[2] = value; break;
-  default: rgb[0] = value; rgb[1] = p; rgb[2] = q; break;
-  }
-  return {static_cast<unsigned char>(std::lround(255 * rgb[0])), static_cast<unsigned char>(std::lround(255 * rgb[1])),
-          static_cast<unsigned char>(std::lround(255 * rgb[2]))};
-}
-
+namespace Sharp_feature_extraction {
 namespace internal {
 
 /// A vertex of the PLY file: a curve vertex (`curve` >= 0) or a point of the cloud (`curve`
@@ -147,6 +117,39 @@ inline bool write_PLY_vertices_and_edges(std::ostream& os, const std::vector<PLY
 }
 
 } // namespace internal
+} // namespace Sharp_feature_extraction
+
+namespace IO {
+
+/// \ingroup PkgSharpFeatureExtractionIORef
+/// The colour of surface patch `patch` in the files and pictures of this package: hues a golden
+/// angle apart (so that patches of neighbouring indices differ most), saturated and bright;
+/// mid grey for `Surface_patches::unassigned`. It depends on the index only.
+/// \returns red, green and blue in [0, 255].
+inline std::array<unsigned char, 3> patch_colour(std::size_t patch)
+{
+  if(patch == (std::numeric_limits<std::size_t>::max)())
+    return {128, 128, 128};
+  // The fractional part of patch / golden ratio: consecutive hues stay far apart however many.
+  const double golden_fraction = 0.6180339887498949;
+  const double hue = 6 * std::fmod(double(patch) * golden_fraction, 1.);
+  const double saturation = 0.75, value = 0.95;
+  const double sector = std::floor(hue), f = hue - sector;
+  const double p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
+  double rgb[3];
+  switch(int(sector) % 6)
+  {
+  case 0: rgb[0] = value; rgb[1] = t; rgb[2] = p; break;
+  case 1: rgb[0] = q; rgb[1] = value; rgb[2] = p; break;
+  case 2: rgb[0] = p; rgb[1] = value; rgb[2] = t; break;
+  case 3: rgb[0] = p; rgb[1] = q; rgb[2] = value; break;
+  case 4: rgb[0] = t; rgb[1] = p; rgb[2] = value; break;
+  default: rgb[0] = value; rgb[1] = p; rgb[2] = q; break;
+  }
+  return {static_cast<unsigned char>(std::lround(255 * rgb[0])), static_cast<unsigned char>(std::lround(255 * rgb[1])),
+          static_cast<unsigned char>(std::lround(255 * rgb[2]))};
+}
+
 
 /// \ingroup PkgSharpFeatureExtractionIORef
 /// Writes a curve network as an ASCII PLY that MeshLab and CloudCompare open: one vertex per
@@ -161,10 +164,10 @@ inline bool write_PLY_vertices_and_edges(std::ostream& os, const std::vector<PLY
 template <typename GeomTraits>
 bool write_PLY_feature_curves(std::ostream& os, const Feature_curve_network<GeomTraits>& network)
 {
-  std::vector<internal::PLY_feature_vertex> vertices;
+  std::vector<Sharp_feature_extraction::internal::PLY_feature_vertex> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
-  internal::collect_PLY_curves(network, vertices, edges);
-  return internal::write_PLY_vertices_and_edges(os, vertices, edges, false);
+  Sharp_feature_extraction::internal::collect_PLY_curves(network, vertices, edges);
+  return Sharp_feature_extraction::internal::write_PLY_vertices_and_edges(os, vertices, edges, false);
 }
 
 /// \ingroup PkgSharpFeatureExtractionIORef
@@ -209,20 +212,20 @@ bool write_PLY_feature_curves(std::ostream& os, const Feature_curve_network<Geom
     throw std::invalid_argument("write_PLY_feature_curves: " + std::to_string(patches.labels.size())
                                 + " patch labels for " + std::to_string(std::distance(points.begin(), points.end()))
                                 + " points");
-  std::vector<internal::PLY_feature_vertex> vertices;
+  std::vector<Sharp_feature_extraction::internal::PLY_feature_vertex> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
-  internal::collect_PLY_curves(network, vertices, edges);
+  Sharp_feature_extraction::internal::collect_PLY_curves(network, vertices, edges);
   std::size_t i = 0;
   for(const auto& item : points)
   {
-    internal::PLY_feature_vertex v;
-    internal::write_PLY_xyz(get(point_map, item), v.p);
+    Sharp_feature_extraction::internal::PLY_feature_vertex v;
+    Sharp_feature_extraction::internal::write_PLY_xyz(get(point_map, item), v.p);
     const std::size_t label = patches.labels[i++];
     v.patch = label == Surface_patches<GeomTraits>::unassigned ? -1 : static_cast<long long>(label);
     v.colour = patch_colour(label);
     vertices.push_back(v);
   }
-  return internal::write_PLY_vertices_and_edges(os, vertices, edges, true);
+  return Sharp_feature_extraction::internal::write_PLY_vertices_and_edges(os, vertices, edges, true);
 }
 
 /// \ingroup PkgSharpFeatureExtractionIORef
