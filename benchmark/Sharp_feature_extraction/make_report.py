@@ -687,6 +687,11 @@ def write_report(data, report, quick):
           "the extracted curves as Mesh_3 features, and both meshes are measured against the true mesh "
           "(distances, crease band, crease angles, triangle count, validity) and rendered with the same "
           "cameras. Tables and pictures: [meshing/MESHING.md](meshing/MESHING.md).\n")
+        w("## 11. Surface patches\n")
+        w("`scripts/bench_patches.sh` (run on its own, about 10 min) segments each part into the surface "
+          "patches that its curves enclose (`CGAL::segment_into_patches()`, default call), at noise 0, 0.5% and "
+          "1% and with 5% outliers, and scores them against the faces of the mesh (mean IoU, adjusted Rand "
+          "index, patch counts). Tables and pictures: [patches/PATCHES.md](patches/PATCHES.md).\n")
 
     if scanner_rows:
         w(scanner_section(scanner_rows))

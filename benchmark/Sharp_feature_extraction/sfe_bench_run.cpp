@@ -6,6 +6,7 @@
 //   sfe_bench_run --mesh M.off --truth PREFIX --points 100000 --noise 0.005 [--outliers 0.01]
 //                 [--denser 5] [--seed 1] [--output rows.jsonl] [--picture curves.png]
 //                 [--save-curves curves.polylines.txt] [--stage-memory 1] [--threads N] [--tiles T]
+//                 [--patches 0] [--patch-picture patches.png]
 //
 // Samples the cloud (same sampler and seed as sfe_vcm_run, so both see the same points), runs
 // CGAL::extract_sharp_features with default parameters only, and appends one JSON line: the
@@ -17,6 +18,9 @@
 // each (extract_sharp_features gives one peak for the whole run).
 //
 // --threads N limits the run to N threads (default 0: all cores).
+//
+// The surface patches (CGAL::segment_into_patches on the final curves) are scored against the
+// faces of the mesh unless --patches 0; --patch-picture draws them (points tinted by patch).
 //
 // --tiles T runs CGAL::extract_sharp_features_in_tiles with at least T tiles instead (default 0:
 // untiled); the candidates and projected points, which the tiled run does not keep, are then not
@@ -72,13 +76,20 @@ std::vector<Point> points_of(const CGAL::Feature_point_set<K>& features)
 
 std::array<double, 3> to_array(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
-// The cloud (thinned to at most 150k points), our curves and corners, from two sides.
-void render(const std::string& path, const std::vector<Point>& cloud, const CGAL::Feature_curve_network<K>& network)
+// The cloud (thinned to at most 150k points), our curves and corners, from two sides; with
+// `patch_labels` (one per point of the cloud), the points tinted by patch.
+void render(const std::string& path, const std::vector<Point>& cloud, const CGAL::Feature_curve_network<K>& network,
+            const std::vector<std::size_t>& patch_labels = {})
 {
   std::vector<std::array<double, 3>> points;
+  std::vector<sfe_utilities::Colour> tints;
   const std::size_t stride = cloud.size() / 150000 + 1;
   for(std::size_t i = 0; i < cloud.size(); i += stride)
+  {
     points.push_back(to_array(cloud[i]));
+    if(!patch_labels.empty())
+      tints.push_back(sfe_utilities::patch_tint(patch_labels[i], CGAL::Surface_patches<K>::unassigned));
+  }
   std::vector<std::vector<std::array<double, 3>>> curves;
   for(const auto& polyline : network.polylines)
   {
@@ -90,7 +101,7 @@ void render(const std::string& path, const std::vector<Point>& cloud, const CGAL
   for(const auto& corner : network.corners)
     corners.push_back(to_array(corner.point));
   sfe_utilities::Png_image image(800, 400);
-  sfe_utilities::render_side_by_side(image, points, curves, corners, sfe_utilities::front_and_back_views());
+  sfe_utilities::render_side_by_side(image, points, curves, corners, sfe_utilities::front_and_back_views(), tints);
   if(!image.write(path))
     throw std::runtime_error("cannot write " + path);
 }
@@ -119,7 +130,8 @@ void add_stage_memory(Json_line& line, const std::vector<Point>& cloud)
 }
 
 /// The surface patches of `cloud` bounded by `network`, scored against the true patches of
-/// the mesh (faces joined across edges no sharper than the ground truth's angle).
+/// the mesh (faces joined across edges no sharper than the ground truth's angle); drawn into
+/// `--patch-picture` if given.
 void add_patch_fields(Json_line& line, const Command_line& options, const std::vector<Point>& cloud,
                       const CGAL::Feature_curve_network<K>& network)
 {
@@ -139,6 +151,8 @@ void add_patch_fields(Json_line& line, const Command_line& options, const std::v
       .add("patches_mean_iou", scores.mean_iou)
       .add("patches_ari", scores.adjusted_rand_index)
       .add("patches_unassigned", scores.unassigned);
+  if(!options.text("patch-picture").empty())
+    render(options.text("patch-picture"), cloud, network, patches.labels);
 }
 
 } // namespace
@@ -149,6 +163,7 @@ int main(int argc, char** argv)
   {
     std::map<std::string, std::string> defaults = cloud_option_defaults();
     defaults["picture"] = "";
+    defaults["patch-picture"] = "";
     defaults["save-curves"] = "";
     defaults["stage-memory"] = "0";
     defaults["threads"] = "0";

@@ -5,7 +5,8 @@
 // Reads .xyz/.ply/.off/.las points (normals ignored), runs the five stages with scales derived from the
 // data (or overridden), writes the curves in Mesh_3's polyline format and, optionally, a PLY with
 // the curve vertices, edges, both surface normals and corner flags, and the surface patch of
-// every point. Prints a summary.
+// every point (then also in the PLY: every point with its patch and its patch's colour). Prints
+// a summary.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
@@ -39,6 +40,7 @@ const char* usage =
   "  INPUT                     point cloud: .xyz, .ply, .off or .las (only positions are used)\n"
   "  -o, --output FILE         curves in Mesh_3's polyline format (one per line: n x1 y1 z1 ...)\n"
   "  --ply FILE                also write curve vertices, edges, both normals and corner flags\n"
+  "                            (with --patches: and every input point, coloured by its patch)\n"
   "  --patches FILE            also write the surface patch of every input point, one integer per\n"
   "                            line in input order (-1: in no patch)\n"
   "  --threads N               number of threads (default: all cores)\n"
@@ -162,7 +164,9 @@ int main(int argc, char** argv)
     polylines.push_back(p.points);
   if(!CGAL::IO::write_polylines(output, polylines))
     fail("cannot write '" + output + "'");
-  if(!ply.empty() && !CGAL::IO::write_PLY_feature_curves(ply, result.network))
+  if(!ply.empty()
+     && !(patches_file.empty() ? CGAL::IO::write_PLY_feature_curves(ply, result.network)
+                               : CGAL::IO::write_PLY_feature_curves(ply, result.network, points, patches)))
     fail("cannot write '" + ply + "'");
   if(!patches_file.empty() && !write_patch_labels(patches_file, patches))
     fail("cannot write '" + patches_file + "'");

@@ -88,6 +88,30 @@ def test_the_files_equal_those_of_the_program_byte_for_byte(cube, extract_progra
     assert (tmp_path / "module.ply").read_bytes() == program_output["ply"].read_bytes()
 
 
+def test_the_programs_ply_with_patches_colours_every_point_by_its_patch(cube, extract_program, tmp_path):
+    cloud = tmp_path / "cube.xyz"
+    np.savetxt(cloud, cube, fmt="%.17g")
+    ply, labels_file = tmp_path / "cube.ply", tmp_path / "cube.labels.txt"
+    subprocess.run([str(extract_program), str(cloud), "-o", str(tmp_path / "cube.polylines.txt"), "--ply", str(ply),
+                    "--patches", str(labels_file), "--quiet"], check=True)
+    labels = np.loadtxt(labels_file, dtype=np.int64)
+    lines = ply.read_text().splitlines()
+    header = lines[:lines.index("end_header")]
+    assert header[-7:-3] == ["property int patch", "property uchar red", "property uchar green", "property uchar blue"]
+    vertices = int(next(line for line in header if line.startswith("element vertex")).split()[2])
+    rows = np.array([line.split() for line in lines[len(header) + 1:len(header) + 1 + vertices]], dtype=float)
+    # The curve vertices first (black, in no patch), then the points in input order.
+    points = rows[-len(cube):]
+    assert np.all(rows[:-len(cube), 11] == -1) and np.all(rows[:-len(cube), 12:] == 0)
+    assert np.array_equal(points[:, :3], cube)
+    assert np.array_equal(points[:, 11].astype(np.int64), labels)
+    colour_of = {}
+    for label, colour in zip(labels, map(tuple, points[:, 12:])):
+        assert colour_of.setdefault(label, colour) == colour  # one colour per patch
+    assert len(set(colour_of.values())) == len(colour_of)  # a different one for each
+    assert colour_of.get(-1, (128, 128, 128)) == (128, 128, 128)  # grey for no patch
+
+
 def test_every_point_is_in_the_patch_of_its_cube_face(cube, cube_result):
     patches = cube_result.patches
     assert patches.shape == (len(cube),) and patches.dtype == np.int64

@@ -1,7 +1,8 @@
 // I/O: write_polylines / read_polylines round trip (same doubles, so shared corners and closed
-// loops stay exact), rejection of malformed lines, the counts in the PLY header, and
-// read_point_cloud (the CLI's reader): XYZ, OFF and PLY (ASCII and binary) read exactly, and
-// malformed files, among them a PLY vertex element without y and z, rejected with a reason.
+// loops stay exact), rejection of malformed lines, the counts in the PLY header, the points
+// coloured by patch in the PLY, and read_point_cloud (the CLI's reader): XYZ, OFF and PLY
+// (ASCII and binary) read exactly, and malformed files, among them a PLY vertex element without
+// y and z, rejected with a reason.
 
 #include "analytic_shapes.h"
 
@@ -16,7 +17,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -226,6 +229,86 @@ TEST_CASE("write_PLY_feature_curves writes one vertex per distinct curve point a
     CHECK(a != b);
   }
   CHECK_FALSE(std::getline(ply, line));
+}
+
+TEST_CASE("write_PLY_feature_curves with patches writes every point after the curve vertices, with its patch and "
+          "its patch's colour", "[io]")
+{
+  const CGAL::Feature_curve_network<K>& net = cube_network();
+  std::stringstream curves_only;
+  REQUIRE(CGAL::IO::write_PLY_feature_curves(curves_only, net));
+  const std::string curve_header = curves_only.str().substr(0, curves_only.str().find("end_header"));
+  std::size_t curve_vertices = 0;
+  std::istringstream(curve_header.substr(curve_header.find("element vertex ") + 15)) >> curve_vertices;
+  REQUIRE(curve_vertices > 0);
+
+  const std::vector<Point_3> points = {Point_3(0.5, 0.1, 0.2), Point_3(3, 3, 3), Point_3(-0.5, 0.25, -0.125)};
+  CGAL::Surface_patches<K> patches;
+  patches.labels = {0, CGAL::Surface_patches<K>::unassigned, 5};
+  std::stringstream ply;
+  REQUIRE(CGAL::IO::write_PLY_feature_curves(ply, net, points, patches));
+  std::string line;
+  std::size_t vertices = 0;
+  bool has_patch = false, has_colour = false;
+  while(std::getline(ply, line) && line != "end_header")
+  {
+    if(line.rfind("element vertex ", 0) == 0)
+      vertices = std::stoul(line.substr(15));
+    has_patch |= line == "property int patch";
+    has_colour |= line == "property uchar red" || line == "property uchar green" || line == "property uchar blue";
+  }
+  CHECK(has_patch);
+  CHECK(has_colour);
+  REQUIRE(vertices == curve_vertices + points.size());
+  // Rows of 15 numbers: x y z, two normals, corner, curve, patch, red green blue.
+  std::vector<std::vector<double>> rows;
+  for(std::size_t v = 0; v < vertices; ++v)
+  {
+    REQUIRE(std::getline(ply, line));
+    std::istringstream row(line);
+    std::vector<double> values(15);
+    for(double& x : values)
+      REQUIRE(row >> x);
+    rows.push_back(values);
+  }
+  for(std::size_t v = 0; v < curve_vertices; ++v)
+  {
+    CHECK(rows[v][10] >= 0);  // a curve
+    CHECK(rows[v][11] == -1); // no patch
+  }
+  const std::vector<long long> expected_patch = {0, -1, 5};
+  for(std::size_t k = 0; k < points.size(); ++k)
+  {
+    const std::vector<double>& row = rows[curve_vertices + k];
+    CHECK(row[0] == points[k].x());
+    CHECK(row[2] == points[k].z());
+    CHECK(row[10] == -1); // no curve
+    CHECK(row[11] == double(expected_patch[k]));
+    const std::array<unsigned char, 3> colour = CGAL::IO::patch_colour(patches.labels[k]);
+    for(int c = 0; c < 3; ++c)
+      CHECK(row[12 + c] == double(colour[std::size_t(c)]));
+  }
+
+  patches.labels.pop_back();
+  std::stringstream mismatched;
+  CHECK_THROWS_AS(CGAL::IO::write_PLY_feature_curves(mismatched, net, points, patches), std::invalid_argument);
+}
+
+TEST_CASE("patch_colour is grey for no patch and tells apart the first 20 patches", "[io]")
+{
+  CHECK(CGAL::IO::patch_colour(CGAL::Surface_patches<K>::unassigned) == std::array<unsigned char, 3>{128, 128, 128});
+  std::vector<std::array<unsigned char, 3>> colours;
+  for(std::size_t patch = 0; patch < 20; ++patch)
+    colours.push_back(CGAL::IO::patch_colour(patch));
+  // Any two differ visibly: by at least 24 levels in some channel; consecutive ones by far more.
+  for(std::size_t a = 0; a < colours.size(); ++a)
+    for(std::size_t b = a + 1; b < colours.size(); ++b)
+    {
+      int largest = 0;
+      for(std::size_t c = 0; c < 3; ++c)
+        largest = (std::max)(largest, std::abs(int(colours[a][c]) - int(colours[b][c])));
+      CHECK(largest >= (b == a + 1 ? 64 : 24));
+    }
 }
 
 TEST_CASE("write_PLY_feature_curves writes a valid empty file for an empty network", "[io]")

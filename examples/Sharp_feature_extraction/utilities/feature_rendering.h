@@ -13,6 +13,8 @@
 #include "png_image.h"
 #include "render_frame.h"
 
+#include <CGAL/Sharp_feature_extraction/IO/write_PLY_feature_curves.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -124,14 +126,14 @@ inline void render_points_and_polylines(Png_image& image, const std::vector<std:
 /// An RGB colour.
 using rendering_internal::Colour;
 
-/// A light colour for patch `label` (shaded like the grey points, so the surface still reads),
-/// dark grey for `unassigned`.
+/// A light colour for patch `label` (the hue of `CGAL::IO::patch_colour()`, as in the PLY files
+/// of the command-line program, half-way to white: shaded like the grey points, so the surface
+/// still reads), dark grey for `unassigned`.
 inline Colour patch_tint(std::size_t label, std::size_t unassigned)
 {
   if(label == unassigned)
     return Colour{90, 90, 90};
-  const std::vector<Colour>& palette = rendering_internal::curve_palette();
-  const Colour& c = palette[label % palette.size()];
+  const std::array<unsigned char, 3> c = CGAL::IO::patch_colour(label);
   return Colour{static_cast<unsigned char>((c[0] + 255) / 2), static_cast<unsigned char>((c[1] + 255) / 2),
                 static_cast<unsigned char>((c[2] + 255) / 2)};
 }

@@ -14,15 +14,24 @@ namespace CGAL {
 /// section 3.6), and fits a plane and a quadric to each.
 ///
 /// A point within the growth radius of a curve vertex or corner lies in the band of that
-/// crease. The points outside the bands link to their 6 nearest (within 3 spacings: longer links
-/// reach outliers), and the regions are the connected sets of those links; a band is wider than
-/// a link, so no region crosses a curve, and a crease that fades out does not split a face (the
-/// regions join around its end). A point of a band then takes the region of the nearest point
-/// outside the bands that lies on its side of the crease: on the surface, of those whose
-/// normals the vertex (or corner) carries, that passes closest to it. Regions smaller than a
-/// stage-2 neighbourhood (`Sharp_feature_scales::rmls_neighbors`) merge into the region they
-/// share most links with; those without links (outliers) stay unassigned. Two patches are
-/// adjacent along a curve when each holds most of the band points of one of its sides.
+/// crease, on the side of the surface (among those whose normals the vertex, or the corner,
+/// carries) that passes closest to it; it lies there clearly when that surface is nearer than
+/// the next by a spacing plus twice the noise. Every point that lies clearly on its side (or
+/// outside the bands) links to its 6 nearest such points within 3 spacings (longer links reach
+/// outliers), and the regions are the sets connected by the links that stay on one side and
+/// whose ends are among the 12 nearest of each other (an outlier near a surface is not among the
+/// nearest of the surface points, so outliers do not bridge two faces): no
+/// region crosses a curve, a crease that fades out does not split a face (the regions join
+/// around its end), and a strip between two close creases is a region of its own. A point
+/// whose side is not clear takes the region of the nearest clear point on its side. Two regions
+/// whose surfaces, fitted on either side of the links between them over a stage-2
+/// neighbourhood (`Sharp_feature_scales::rmls_neighbors`), have normals within 15 degrees
+/// along at least 4 in 5 of those links (a link that a crease band sees cross to another side
+/// counts against) are pieces of one face and join (a face pinched
+/// between the bands of two curves, or cut by the surfaces of a corner extended). Regions
+/// smaller than a stage-2 neighbourhood merge into the region they share most links with; those
+/// without links (outliers) stay unassigned. Two patches are adjacent along a curve when each
+/// holds most of the band points of one of its sides.
 ///
 /// The result depends on the points and the curves only: the same whatever the number of
 /// threads.

@@ -3,8 +3,9 @@
 //
 // Surface patches (paper 3.6): the points split into the regions that the feature curves
 // enclose. Regions grow over the points that lie clearly on one side of every crease (outside
-// the crease bands, or in a band but clearly nearer one of its surfaces), along links that stay
-// on one side; the points of a band within the blur of the crease join the region on their side.
+// the crease bands, or in a band but clearly nearer one of its surfaces), along links between
+// such points that stay on one side; the points of a band within the blur of the crease join
+// the region on their side; regions that meet without a crease between them join.
 
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
@@ -37,6 +38,12 @@ struct Patch_constants
   static constexpr std::size_t linked_neighbors = 6;
   /// Links longer than this many spacings are not surface: they reach outliers.
   static constexpr double longest_link = 3;
+  /// A link grows a region only if its ends are among the this many nearest points of each
+  /// other: an outlier floating near a surface has surface points among its nearest, but no
+  /// surface point has it among its own (they are on the surface, nearer), so that outliers do
+  /// not bridge two faces across their crease. Twice the linked neighbours: the strict mutual
+  /// neighbours cut narrow strips apart.
+  static constexpr std::size_t mutual_neighbors = 2 * linked_neighbors;
   /// A point of a crease band whose side is not clear takes the region of the nearest clear
   /// point on its side, among this many nearest clear points (those on the other side are about
   /// as near: a few times the number of linked neighbours).
@@ -50,6 +57,14 @@ struct Patch_constants
   /// could not have found them as surfaces): they merge into the neighbour they share most
   /// links with.
   static constexpr double smallest_patch_per_rmls_neighbors = 1;
+  /// Two regions whose surfaces, where they meet, have normals within this angle (degrees)
+  /// meet without a crease: the curves mark creases of the sharpness angle (25 degrees by
+  /// default) and more; the margin absorbs the error of normals fitted through the noise.
+  static constexpr double crease_angle = 15;
+  /// Two regions are joined when the links between them that see no crease outnumber those
+  /// that see one by this factor: along a crease between two faces, nearly every link sees it;
+  /// between two pieces of one face, only the few whose normals the noise tilted.
+  static constexpr std::size_t smooth_links_per_crease_link = 4;
 };
 
 /// Union-find over point positions; the root of a set is its smallest element, so that the
@@ -213,16 +228,32 @@ struct Patch_labels
   std::size_t number_of_patches = 0;
 };
 
-/// The regions of the points that lie clearly on their side: a point links to its
-/// `linked_neighbors` nearest within `longest_link` spacings, and the regions are the sets
-/// connected by the links that stay on one side (a band is wider than a link, so a link between
-/// two points outside the bands crosses no crease; a link with an end in a band is kept when
-/// that end lies clearly on its side and the crease there puts the other end on the same side).
-/// A strip between two close creases, narrower than two bands, is a region of its own; a face
-/// pinched by the bands of two curves stays one. Returns false if cancelled.
+/// The points that lie clearly on their side of every crease (see `Crease_side::clear`), indexed
+/// for nearest-neighbour queries: the regions grow over them.
+struct Clear_points
+{
+  /// Their positions in `Indexed_input::points`.
+  std::vector<std::size_t> positions;
+  std::vector<Vec3> points;
+  Point_index index;
+};
+
+/// The regions of the points that lie clearly on their side: a clear point links to its
+/// `linked_neighbors` nearest clear points within `longest_link` spacings (the nearest of all
+/// would be, near a crease, mostly points within its blur, and a face pinched between the
+/// bands of two curves would fall apart where its clear points are few), and the regions are
+/// the sets connected by the links that stay on one side (a band is wider than a link, so a
+/// link between two points outside the bands crosses no crease; a link with an end in a band is
+/// kept when that end lies clearly on its side and the crease there puts the other end on the
+/// same side, and each end is among the `mutual_neighbors` nearest of the other: outliers do not
+/// bridge faces). A point whose side is not clear links to its nearest points of any kind, for the
+/// merging of small regions only. A strip between two close creases, narrower than two bands,
+/// is a region of its own; a face pinched by the bands of two curves stays one. Returns false
+/// if cancelled.
 template <typename ConcurrencyTag>
 bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
-                  Progress progress, Patch_labels& labels, std::vector<std::vector<std::size_t>>& links)
+                  Progress progress, Patch_labels& labels, Clear_points& clear,
+                  std::vector<std::vector<std::size_t>>& links)
 {
   typedef Patch_constants Constants;
   const std::vector<Vec3>& points = input.points;
@@ -233,28 +264,54 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   const double longest = Constants::longest_link * scales.spacing;
   const double margin = Constants::side_clearance_spacings * scales.spacing
                         + Constants::side_clearance_noises * scales.noise;
-  if(!parallel_blocks<ConcurrencyTag>(n, progress, [&](std::size_t first, std::size_t last) {
+  Progress locating = progress.sub(0, 0.5), linking = progress.sub(0.5, 1);
+  // nearest[i]: the `mutual_neighbors` nearest points of i (clear ones if i is clear) within a link
+  std::vector<std::vector<std::size_t>> nearest(n);
+  if(!parallel_blocks<ConcurrencyTag>(n, locating, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> scratch;
+       for(std::size_t i = first; i < last; ++i)
+         labels.where[i] = landmarks.locate(points[i], band, margin, scratch);
+     }))
+    return false;
+  clear = Clear_points();
+  for(std::size_t i = 0; i < n; ++i)
+    if(labels.where[i].clear)
+    {
+      clear.positions.push_back(i);
+      clear.points.push_back(points[i]);
+    }
+  clear.index.build<ConcurrencyTag>(clear.points);
+  if(!parallel_blocks<ConcurrencyTag>(n, linking, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> scratch;
        for(std::size_t i = first; i < last; ++i)
        {
-         labels.where[i] = landmarks.locate(points[i], band, margin, scratch);
-         input.index.nearest(points[i], Constants::linked_neighbors + 1, scratch);
-         for(std::size_t j : scratch)
-           if(j != i && (points[j] - points[i]).norm() <= longest)
+         const bool is_clear = labels.where[i].clear;
+         (is_clear ? clear.index : input.index).nearest(points[i], Constants::mutual_neighbors + 1, scratch);
+         for(std::size_t k : scratch)
+         {
+           const std::size_t j = is_clear ? clear.positions[k] : k;
+           if(j == i || (points[j] - points[i]).norm() > longest)
+             continue;
+           if(links[i].size() < Constants::linked_neighbors)
              links[i].push_back(j);
+           nearest[i].push_back(j);
+         }
        }
      }))
     return false;
   // a link stays on one surface when each of its ends in a band lies clearly on its side and
-  // sees the other end on that side
+  // sees the other end on that side; it grows a region when its ends are mutual near neighbours
   auto sees_on_its_side = [&](std::size_t i, std::size_t j) {
     const Crease_side& where = labels.where[i];
-    return where.landmark == no_index || (where.clear && landmarks.side(where.landmark, points[j]) == where.side);
+    return where.landmark == no_index
+           || (where.clear && landmarks.side(where.landmark, points[j]) == where.side
+               && landmarks.clearance(where.landmark, points[j]) >= margin);
   };
   Disjoint_sets sets(n);
   for(std::size_t i = 0; i < n; ++i)
     for(std::size_t j : links[i])
-      if(sees_on_its_side(i, j) && sees_on_its_side(j, i))
+      if(std::find(nearest[j].begin(), nearest[j].end(), i) != nearest[j].end() && sees_on_its_side(i, j)
+         && sees_on_its_side(j, i))
         sets.unite(i, j);
   labels.label.assign(n, no_index);
   for(std::size_t i = 0; i < n; ++i)
@@ -268,19 +325,9 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
 /// a point within the noise of the crease may lie on either side). Points with no such
 /// neighbour keep no region. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks& landmarks, Progress progress,
-                        Patch_labels& labels)
+bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks& landmarks, const Clear_points& clear,
+                        Progress progress, Patch_labels& labels)
 {
-  std::vector<std::size_t> clear;
-  std::vector<Vec3> clear_points;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(labels.where[i].clear)
-    {
-      clear.push_back(i);
-      clear_points.push_back(points[i]);
-    }
-  Point_index index;
-  index.build<ConcurrencyTag>(clear_points);
   std::vector<std::size_t> assigned(points.size(), no_index);
   if(!parallel_blocks<ConcurrencyTag>(points.size(), progress, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> nearest;
@@ -289,11 +336,11 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
          const Crease_side& where = labels.where[i];
          if(where.clear)
            continue;
-         index.nearest(points[i], Patch_constants::band_candidates, nearest);
+         clear.index.nearest(points[i], Patch_constants::band_candidates, nearest);
          for(std::size_t k : nearest)
-           if(landmarks.side(where.landmark, clear_points[k]) == where.side)
+           if(landmarks.side(where.landmark, clear.points[k]) == where.side)
            {
-             assigned[i] = labels.label[clear[k]];
+             assigned[i] = labels.label[clear.positions[k]];
              break;
            }
        }
@@ -302,6 +349,121 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
   for(std::size_t i = 0; i < points.size(); ++i)
     if(!labels.where[i].clear)
       labels.label[i] = assigned[i];
+  return true;
+}
+
+/// The unit normal of the surface of region `label` around `x`: the least-squares plane of the
+/// points of that region among the `neighbors` nearest to `x`; false when they are fewer than
+/// `linked_neighbors` (too few to fit through the noise).
+inline bool region_normal_around(const Indexed_input& input, const std::vector<std::size_t>& label, std::size_t region,
+                                 const Vec3& x, std::size_t neighbors, std::vector<std::size_t>& scratch, Vec3& normal)
+{
+  input.index.nearest(x, neighbors, scratch);
+  scratch.erase(std::remove_if(scratch.begin(), scratch.end(), [&](std::size_t j) { return label[j] != region; }),
+                scratch.end());
+  Local_frame frame;
+  Vec3 variances;
+  if(scratch.size() < Patch_constants::linked_neighbors || !principal_frame(input.points, scratch, frame, variances))
+    return false;
+  normal = frame.n;
+  return true;
+}
+
+/// Joins the regions that meet without a crease between them: two regions whose surfaces, on
+/// either side of the links between them, have normals within `Patch_constants::crease_angle`
+/// along most of those links (a link that a crease band sees cross to another side counts as
+/// crossing a crease whatever the normals: where noise blurs a crease, the fitted normals of
+/// its two faces can come closer than the angle). Such regions are pieces of one face that a crease band cut
+/// apart where it left no clear point across it: a face pinched between the bands of two close
+/// curves (a tooth tip of a gear), or beside a corner whose surfaces, extended, cut through it.
+/// The normals are fitted over a stage-2 neighbourhood (`rmls_neighbors`), which the forward
+/// search found large enough to fit a surface through the noise. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool join_regions_without_crease(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
+                                 const std::vector<std::vector<std::size_t>>& links, Progress progress,
+                                 Patch_labels& labels)
+{
+  const std::size_t n = labels.label.size();
+  const std::vector<std::size_t>& label = labels.label;
+  auto across = [&](std::size_t i, std::size_t j) {
+    return label[i] != no_index && label[j] != no_index && label[i] != label[j];
+  };
+  std::vector<std::size_t> boundary;
+  for(std::size_t i = 0; i < n; ++i)
+    if(std::any_of(links[i].begin(), links[i].end(), [&](std::size_t j) { return across(i, j); }))
+      boundary.push_back(i);
+  // normals[k]: of the region of boundary[k] around it (if it has enough points there)
+  std::vector<Vec3> normals(boundary.size());
+  std::vector<char> has_normal(boundary.size(), 0);
+  if(!parallel_blocks<ConcurrencyTag>(boundary.size(), progress, [&](std::size_t first, std::size_t last) {
+       std::vector<std::size_t> scratch;
+       for(std::size_t k = first; k < last; ++k)
+       {
+         const std::size_t i = boundary[k];
+         has_normal[k] =
+           region_normal_around(input, label, label[i], input.points[i], scales.rmls_neighbors, scratch, normals[k]);
+       }
+     }))
+    return false;
+  std::vector<std::size_t> position_in_boundary(n, no_index);
+  for(std::size_t k = 0; k < boundary.size(); ++k)
+    position_in_boundary[boundary[k]] = k;
+  // a link crosses a crease where one of its ends lies in a band and sees the other on another side
+  auto crosses_a_crease = [&](std::size_t i, std::size_t j) {
+    const Crease_side& where = labels.where[i];
+    return where.landmark != no_index && landmarks.side(where.landmark, input.points[j]) != where.side;
+  };
+  // votes[(a, b)]: links between regions a < b that cross no crease and whose two normals agree,
+  // and the others
+  std::map<std::pair<std::size_t, std::size_t>, std::array<std::size_t, 2>> votes;
+  const double cos_crease = std::cos(radians(Patch_constants::crease_angle));
+  for(std::size_t k = 0; k < boundary.size(); ++k)
+  {
+    const std::size_t i = boundary[k];
+    for(std::size_t j : links[i])
+    {
+      if(!across(i, j) || !has_normal[k] || !has_normal[position_in_boundary[j]])
+        continue;
+      const bool smooth = !crosses_a_crease(i, j) && !crosses_a_crease(j, i)
+                          && std::abs(normals[k].dot(normals[position_in_boundary[j]])) >= cos_crease;
+      ++votes[{(std::min)(label[i], label[j]), (std::max)(label[i], label[j])}][smooth ? 0 : 1];
+    }
+  }
+  auto mostly_smooth = [](const std::array<std::size_t, 2>& count) {
+    return count[0] > 0 && count[0] >= Patch_constants::smooth_links_per_crease_link * count[1];
+  };
+  // Join the pairs most links call smooth first; a join is made when the links between the two
+  // sets joined so far are mostly smooth, so that a piece lying along a crease (smooth with
+  // both of its sides) does not join the two faces of that crease.
+  std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> candidates;
+  for(const auto& [pair, count] : votes)
+    if(mostly_smooth(count))
+      candidates.emplace_back(count[0], pair);
+  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;
+  });
+  Disjoint_sets sets(n);
+  for(const auto& candidate : candidates)
+  {
+    const std::size_t a = sets.find(candidate.second.first), b = sets.find(candidate.second.second);
+    if(a == b)
+      continue;
+    std::array<std::size_t, 2> between = {0, 0};
+    for(const auto& [pair, count] : votes)
+    {
+      const std::size_t x = sets.find(pair.first), y = sets.find(pair.second);
+      if((x == a && y == b) || (x == b && y == a))
+      {
+        between[0] += count[0];
+        between[1] += count[1];
+      }
+    }
+    if(mostly_smooth(between))
+      sets.unite(a, b);
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(labels.label[i] != no_index)
+      labels.label[i] = sets.find(labels.label[i]);
   return true;
 }
 
@@ -461,9 +623,11 @@ bool segment_patches(const Indexed_input& input, const Working_network& network,
     return progress.report(1.);
   const Crease_landmarks landmarks(network);
   Patch_labels labels;
+  Clear_points clear;
   std::vector<std::vector<std::size_t>> links;
-  if(!grow_regions<ConcurrencyTag>(input, landmarks, scales, progress.sub(0, 0.6), labels, links)
-     || !assign_band_points<ConcurrencyTag>(input.points, landmarks, progress.sub(0.6, 0.9), labels))
+  if(!grow_regions<ConcurrencyTag>(input, landmarks, scales, progress.sub(0, 0.6), labels, clear, links)
+     || !assign_band_points<ConcurrencyTag>(input.points, landmarks, clear, progress.sub(0.6, 0.75), labels)
+     || !join_regions_without_crease<ConcurrencyTag>(input, landmarks, scales, links, progress.sub(0.75, 0.9), labels))
     return false;
   const std::size_t smallest =
     std::size_t(Patch_constants::smallest_patch_per_rmls_neighbors * double(scales.rmls_neighbors));
