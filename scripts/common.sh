@@ -13,9 +13,9 @@ SFE_OUT_DIR="$SFE_ROOT/out" # git-ignored: meshes, caches and results never ente
 SFE_CGAL_DATA_ARCHIVE="${SFE_CGAL_DATA_ARCHIVE:-/usr/share/doc/libcgal-dev/data.tar.gz}"
 
 # Debian packages needed to build the package, its examples, tests and documentation
-# (pkg-config finds OpenJPEG, which the point-cloud coder needs).
+# (pkg-config finds OpenJPEG, which the point-cloud coder needs; zlib deflates the programs' PNGs).
 SFE_PACKAGES=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtbb-dev catch2 doxygen
-              pkg-config libopenjp2-7-dev)
+              pkg-config libopenjp2-7-dev zlib1g-dev)
 # Debian packages needed, besides those, to build and test the Python module (python/); dask's
 # python3-distributed runs `python3 -m sharp_features --workers K`, python3-tqdm draws its
 # progress bar.

@@ -226,7 +226,8 @@ void write_summary(std::ostream& out, std::size_t points, const CGAL::Surface_re
         << r.protected_vertices << " protected vertices), " << r.projected_onto_creases
         << " curve vertices moved onto the fitted creases, " << r.moved_onto_surface << " onto the surface, "
         << r.cut_off_surface << " curves cut off the surface, " << r.cut_near_other_sheet
-        << " near another sheet of it\n";
+        << " near another sheet of it\n"
+        << "curves repaired again on the surface: " << r.repair_after_projection.summary() << "\n";
   for(const auto& problem : r.remaining_polyline_problems)
     out << "  curve problem left: " << problem.description << "\n";
   out << "normals: " << r.corrected_normals << " corrected near creases, " << r.unoriented_points

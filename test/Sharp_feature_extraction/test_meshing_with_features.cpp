@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -332,6 +333,54 @@ TEST_CASE("a curve on a wall or across a gap narrower than the clearance (Mesh_3
       if(!narrow)
         CHECK(curves.front().points.size() == curve.points.size());
     }
+}
+
+TEST_CASE("two curves that pass 2 s apart, on either side of the surface, cross once moved onto it "
+          "(Mesh_3 fails on such curves): they are split where they cross, meet at one shared point, "
+          "and pass the Mesh_3 check; neither is dropped",
+          "[meshing]")
+{
+  namespace mp = CGAL::Sharp_feature_extraction::internal::mesh_polylines;
+  typedef rc::Reconstruction_constants C;
+  const double s = 0.01;
+  auto plane = [](const Point_3& x) { return x.z(); };
+  const int half_steps = 40;
+  const double step = 0.5 * s;
+  Curve above, below;
+  for(int i = -half_steps; i <= half_steps; ++i) {
+    above.points.push_back(Point_3(step * i, 0, s));
+    // a quarter step off, so that no vertex of one lands on a vertex of the other
+    below.points.push_back(Point_3(0, step * (i + 0.25), -s));
+  }
+  std::vector<Curve> curves = {above, below};
+  mp::Repair_settings repair;
+  repair.tolerance = C::repair_tolerance * s;
+  repair.minimum_length = C::minimum_polyline_length * s;
+  const mp::Contract_tolerances tolerances{repair.tolerance, repair.maximum_angle};
+  REQUIRE(mp::find_contract_violations(curves, tolerances).empty());
+  CGAL::Surface_reconstruction_report<K> report;
+  report.edge_size = 3 * s;
+  rc::prepare_protected_polylines<K>(curves, plane, s, repair, report);
+  CHECK(mp::find_contract_violations(curves, tolerances).empty());
+  REQUIRE(curves.size() == 4);
+  std::map<std::array<double, 3>, int> ends;
+  double length = 0;
+  for(const Curve& c : curves) {
+    for(const Point_3& p : {c.points.front(), c.points.back()})
+      ++ends[{p.x(), p.y(), p.z()}];
+    for(const Point_3& p : c.points)
+      CHECK(std::abs(p.z()) < 1e-3 * s);
+    length += mp::curve_length(c);
+  }
+  // the four pieces meet at the crossing; their other ends are the curves' own
+  REQUIRE(ends.size() == 5);
+  const auto crossing = std::max_element(ends.begin(), ends.end(), [](const auto& a, const auto& b) {
+    return a.second < b.second;
+  });
+  CHECK(crossing->second == 4);
+  CHECK(std::hypot(crossing->first[0], crossing->first[1]) < step);
+  // nothing but the moves at the crossing changed the length of the two curves
+  CHECK(std::abs(length - 2 * mp::curve_length(above)) < step);
 }
 
 TEST_CASE("Mesh_3 stopped while it refines the facets, before it labels the cells inside (the time "

@@ -3,5 +3,5 @@
 # together with mesh_with_sharp_features (examples/).
 add_executable(measure_mesh_against_truth
   ${CMAKE_CURRENT_LIST_DIR}/measure_mesh_against_truth.cpp)
-target_link_libraries(measure_mesh_against_truth PRIVATE CGAL::Sharp_feature_extraction)
+target_link_libraries(measure_mesh_against_truth PRIVATE CGAL::Sharp_feature_extraction ZLIB::ZLIB)
 target_include_directories(measure_mesh_against_truth PRIVATE ${CMAKE_CURRENT_LIST_DIR} ${SFE_UTILITIES_DIR})

@@ -51,6 +51,10 @@ struct Surface_reconstruction_report
 
   /// What the Mesh_3 repair of the polylines changed.
   Mesh_3_polyline_repair_report repair;
+  /// What the repair changed when it ran again on the polylines moved onto the implicit
+  /// surface (the move and the cuts can undo the first repair), and the polylines it dropped
+  /// last because they still did not pass `find_mesh_3_polyline_problems()`.
+  Mesh_3_polyline_repair_report repair_after_projection;
   /// Polyline vertices moved onto the implicit surface before meshing.
   std::size_t moved_onto_surface = 0;
   /// Polylines cut where a vertex had no point of the implicit surface near it.

@@ -103,8 +103,10 @@ Reconstruction_settings reconstruction_settings(const NamedParameters& np)
 /// the two patches, so that the creases stay sharp; the polyline vertices are moved onto that
 /// function's zero set (a polyline is cut where it is farther than 1.25 spacings from it, or
 /// where the zero set has another sheet nearer than `edge_size` along the vertex's normal: a
-/// wall or a gap thinner than Mesh_3's protecting balls, whose refinement would not end); Mesh_3
-/// meshes the zero set with the polylines protected, with manifold output.
+/// wall or a gap thinner than Mesh_3's protecting balls, whose refinement would not end); where
+/// these moves and cuts undid the repair, it runs again (the vertices it moves are moved onto the
+/// zero set again), and a polyline that still fails `find_mesh_3_polyline_problems()` is
+/// dropped; Mesh_3 meshes the zero set with the polylines protected, with manifold output.
 ///
 /// Every size is relative to `features.scales.spacing` (the mean distance to the 6th nearest
 /// neighbour) and `features.scales.noise`: pass the network computed by
