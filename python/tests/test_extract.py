@@ -170,7 +170,16 @@ def test_an_exception_in_progress_propagates(cube):
         sharp_features.extract(cube, progress=1)
 
 
-def test_ctrl_c_in_progress_cancels(cube):
+@pytest.fixture
+def python_handles_ctrl_c():
+    """Python's own SIGINT handler, whatever this process inherited: a shell starts background
+    jobs with SIGINT ignored, and Python then installs no handler of its own."""
+    inherited = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, inherited)
+
+
+def test_ctrl_c_in_progress_cancels(cube, python_handles_ctrl_c):
     calls = []
 
     def interrupted(fraction):
@@ -188,7 +197,7 @@ INTERRUPTED_CLOUD_POINTS = 150_000
 INTERRUPT_DELAY = 0.1  # seconds
 
 
-def test_ctrl_c_cancels_without_progress_function():
+def test_ctrl_c_cancels_without_progress_function(python_handles_ctrl_c):
     points = sample_cube_surface(INTERRUPTED_CLOUD_POINTS, seed=2)
     interrupt = threading.Timer(INTERRUPT_DELAY, os.kill, (os.getpid(), signal.SIGINT))
     interrupt.start()
