@@ -388,9 +388,15 @@ bool join_regions_without_crease(const Indexed_input& input, const Crease_landma
   auto across = [&](std::size_t i, std::size_t j) {
     return label[i] != no_index && label[j] != no_index && label[i] != label[j];
   };
+  // both ends of a link between two regions (links are not symmetric: j need not link back to i)
+  std::vector<char> on_boundary(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j : links[i])
+      if(across(i, j))
+        on_boundary[i] = on_boundary[j] = 1;
   std::vector<std::size_t> boundary;
   for(std::size_t i = 0; i < n; ++i)
-    if(std::any_of(links[i].begin(), links[i].end(), [&](std::size_t j) { return across(i, j); }))
+    if(on_boundary[i])
       boundary.push_back(i);
   // normals[k]: of the region of boundary[k] around it (if it has enough points there)
   std::vector<Vec3> normals(boundary.size());
