@@ -16,8 +16,12 @@ namespace CGAL {
 /// A point within the growth radius of a curve vertex or corner lies in the band of that
 /// crease, on the side of the surface (among those whose normals the vertex, or the corner,
 /// carries) that passes closest to it; it lies there clearly when that surface is nearer than
-/// the next by a spacing plus twice the noise. Every point that lies clearly on its side (or
-/// outside the bands) links to its 6 nearest such points within 3 spacings (longer links reach
+/// the next by a spacing plus twice the noise. A point outside the bands lies on a crease that
+/// no curve marks (a gap in a curve) when the jet fitted to its stage-1 neighbourhood leaves a
+/// residual above the candidate threshold (`Sharp_feature_scales::residual_threshold`) and
+/// above what a crease of 25 degrees leaves (0.042 stage-1 radii): such points stop the
+/// regions as the bands do. Every point that lies clearly on its side (or outside the bands and
+/// on no such crease) links to its 6 nearest such points within 3 spacings (longer links reach
 /// outliers), and the regions are the sets connected by the links that stay on one side and
 /// whose ends are among the 12 nearest of each other (an outlier near a surface is not among the
 /// nearest of the surface points, so outliers do not bridge two faces): no
@@ -29,8 +33,9 @@ namespace CGAL {
 /// along at least 4 in 5 of those links (a link that a crease band sees cross to another side
 /// counts against) are pieces of one face and join (a face pinched
 /// between the bands of two curves, or cut by the surfaces of a corner extended). Regions
-/// smaller than a stage-2 neighbourhood merge into the region they share most links with; those
-/// without links (outliers) stay unassigned. Two patches are adjacent along a curve when each
+/// smaller than a stage-2 neighbourhood (not counting the points on a crease without a curve)
+/// merge into the region they share most links with; those without links (outliers) stay
+/// unassigned. Two patches are adjacent along a curve when each
 /// holds most of the band points of one of its sides.
 ///
 /// The result depends on the points and the curves only: the same whatever the number of

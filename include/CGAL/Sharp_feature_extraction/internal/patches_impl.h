@@ -3,9 +3,10 @@
 //
 // Surface patches (paper 3.6): the points split into the regions that the feature curves
 // enclose. Regions grow over the points that lie clearly on one side of every crease (outside
-// the crease bands, or in a band but clearly nearer one of its surfaces), along links between
-// such points that stay on one side; the points of a band within the blur of the crease join
-// the region on their side; regions that meet without a crease between them join.
+// the crease bands and on no crease that the curves miss, or in a band but clearly nearer one
+// of its surfaces), along links between such points that stay on one side; the points of a
+// band within the blur of the crease join the region on their side; regions that meet without
+// a crease between them join.
 
 #ifndef CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
 #define CGAL_SHARP_FEATURE_EXTRACTION_INTERNAL_PATCHES_IMPL_H
@@ -17,6 +18,7 @@
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/Sharp_feature_extraction/internal/Principal_axes.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
+#include <CGAL/Sharp_feature_extraction/internal/candidate_points_impl.h>
 
 #include <algorithm>
 #include <array>
@@ -61,6 +63,16 @@ struct Patch_constants
   /// meet without a crease: the curves mark creases of the sharpness angle (25 degrees by
   /// default) and more; the margin absorbs the error of normals fitted through the noise.
   static constexpr double crease_angle = 15;
+  /// A point outside every crease band lies on a crease that no curve marks (a gap in a
+  /// curve) when the largest residual of the jet fitted to its stage-1 neighbourhood exceeds the
+  /// candidate threshold and this fraction of the stage-1 radius: the residual, at a crease,
+  /// of a quadric fitted across it is about 3/16 of the radius times the tangent of half its
+  /// angle (the least-squares fit of a + b x^2 to |x| on [-1, 1] has a = 3/16), 0.042 for a
+  /// crease of the sharpness angle (25 degrees), half of that for the 12-degree folds of a
+  /// tessellated cylinder, which must not stop the regions.
+  static constexpr double unmarked_crease_residual_per_radius = 0.042;
+  /// The jet of the residual above: a quadric, as stage 1 fits by default.
+  static constexpr int unmarked_crease_jet_degree = 2;
   /// Two regions are joined when the links between them that see no crease outnumber those
   /// that see one by this factor: along a crease between two faces, nearly every link sees it;
   /// between two pieces of one face, only the few whose normals the noise tilted.
@@ -102,8 +114,9 @@ struct Crease_side
 {
   std::size_t landmark = no_index;
   std::size_t side = 0;
-  /// Whether the point lies clearly on its side: outside the band, or closer to the surface of
-  /// its side than to the next by a margin (see `Patch_constants::side_clearance_spacings`).
+  /// Whether the point lies clearly on its side: outside the bands and on no crease that the
+  /// curves miss, or in a band and closer to the surface of its side than to the next by a
+  /// margin (see `Patch_constants::side_clearance_spacings`).
   bool clear = true;
 };
 
@@ -238,6 +251,27 @@ struct Clear_points
   Point_index index;
 };
 
+/// Marks as not clear the points outside every crease band that lie on a crease that no curve
+/// marks (see `Patch_constants::unmarked_crease_residual_per_radius`): where a curve has a gap,
+/// they close the barrier between its two faces that the bands of its pieces leave open, which
+/// the regions would otherwise grow through. Returns false if cancelled.
+template <typename ConcurrencyTag>
+bool mark_creases_without_curve(const Indexed_input& input, const Scales& scales, Progress progress,
+                                std::vector<Crease_side>& where)
+{
+  if(scales.candidate_neighbors == 0 || !(scales.candidate_radius > 0))
+    return progress.report(1.);
+  const double threshold = (std::max)(scales.residual_threshold,
+                                      Patch_constants::unmarked_crease_residual_per_radius * scales.candidate_radius);
+  return for_each_neighborhood<ConcurrencyTag>(
+    input.points, input.index, scales.candidate_neighbors, neighborhood_cell_per_radius * scales.candidate_radius,
+    progress, [&](std::size_t i, const std::vector<std::size_t>& neighbors) {
+      if(where[i].landmark == no_index
+         && fit_residuals(input.points, neighbors, Patch_constants::unmarked_crease_jet_degree).max_residual > threshold)
+        where[i].clear = false;
+    });
+}
+
 /// The regions of the points that lie clearly on their side: a clear point links to its
 /// `linked_neighbors` nearest clear points within `longest_link` spacings (the nearest of all
 /// would be, near a crease, mostly points within its blur, and a face pinched between the
@@ -264,14 +298,15 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   const double longest = Constants::longest_link * scales.spacing;
   const double margin = Constants::side_clearance_spacings * scales.spacing
                         + Constants::side_clearance_noises * scales.noise;
-  Progress locating = progress.sub(0, 0.5), linking = progress.sub(0.5, 1);
+  Progress locating = progress.sub(0, 0.3), marking = progress.sub(0.3, 0.6), linking = progress.sub(0.6, 1);
   // nearest[i]: the `mutual_neighbors` nearest points of i (clear ones if i is clear) within a link
   std::vector<std::vector<std::size_t>> nearest(n);
   if(!parallel_blocks<ConcurrencyTag>(n, locating, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> scratch;
        for(std::size_t i = first; i < last; ++i)
          labels.where[i] = landmarks.locate(points[i], band, margin, scratch);
-     }))
+     })
+     || !mark_creases_without_curve<ConcurrencyTag>(input, scales, marking, labels.where))
     return false;
   clear = Clear_points();
   for(std::size_t i = 0; i < n; ++i)
@@ -303,9 +338,10 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   // sees the other end on that side; it grows a region when its ends are mutual near neighbours
   auto sees_on_its_side = [&](std::size_t i, std::size_t j) {
     const Crease_side& where = labels.where[i];
-    return where.landmark == no_index
-           || (where.clear && landmarks.side(where.landmark, points[j]) == where.side
-               && landmarks.clearance(where.landmark, points[j]) >= margin);
+    return where.clear
+           && (where.landmark == no_index
+               || (landmarks.side(where.landmark, points[j]) == where.side
+                   && landmarks.clearance(where.landmark, points[j]) >= margin));
   };
   Disjoint_sets sets(n);
   for(std::size_t i = 0; i < n; ++i)
@@ -323,7 +359,9 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
 /// Gives every point of a crease band whose side is not clear the region of the nearest clear
 /// point that lies on its side of the crease (among the `band_candidates` nearest clear points:
 /// a point within the noise of the crease may lie on either side). Points with no such
-/// neighbour keep no region. Returns false if cancelled.
+/// neighbour, and those on a crease that no curve marks (they have no side), keep no region:
+/// the merging of small regions gives them the region they share most links with. Returns
+/// false if cancelled.
 template <typename ConcurrencyTag>
 bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks& landmarks, const Clear_points& clear,
                         Progress progress, Patch_labels& labels)
@@ -334,7 +372,7 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
        for(std::size_t i = first; i < last; ++i)
        {
          const Crease_side& where = labels.where[i];
-         if(where.clear)
+         if(where.clear || where.landmark == no_index)
            continue;
          clear.index.nearest(points[i], Patch_constants::band_candidates, nearest);
          for(std::size_t k : nearest)
@@ -347,7 +385,7 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
      }))
     return false;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(!labels.where[i].clear)
+    if(!labels.where[i].clear && labels.where[i].landmark != no_index)
       labels.label[i] = assigned[i];
   return true;
 }
@@ -473,23 +511,26 @@ bool join_regions_without_crease(const Indexed_input& input, const Crease_landma
   return true;
 }
 
-/// The size of the region of every point's root (0 for points that are not roots).
-inline std::vector<std::size_t> region_sizes(Disjoint_sets& sets, std::size_t n)
+/// The number of points in the region of every point's root (0 for points that are not roots),
+/// those on a crease that no curve marks left out (see `mark_creases_without_curve()`).
+inline std::vector<std::size_t> region_sizes(Disjoint_sets& sets, const std::vector<Crease_side>& where)
 {
-  std::vector<std::size_t> size(n, 0);
-  for(std::size_t i = 0; i < n; ++i)
-    ++size[sets.find(i)];
+  std::vector<std::size_t> size(where.size(), 0);
+  for(std::size_t i = 0; i < where.size(); ++i)
+    if(where[i].clear || where[i].landmark != no_index)
+      ++size[sets.find(i)];
   return size;
 }
 
-/// One round of merging: every region smaller than `smallest` points joins the region it
-/// shares most links with (ties: the smaller root), as counted at the start of the round.
+/// One round of merging: every region with fewer than `smallest` points (see `region_sizes()`)
+/// joins the region it shares most links with (ties: the smaller root), as counted at the start
+/// of the round.
 /// Returns false when no small region has a link out.
-inline bool merge_small_regions_once(const std::vector<std::vector<std::size_t>>& links, std::size_t smallest,
-                                     Disjoint_sets& sets)
+inline bool merge_small_regions_once(const std::vector<std::vector<std::size_t>>& links,
+                                     const std::vector<Crease_side>& where, std::size_t smallest, Disjoint_sets& sets)
 {
   const std::size_t n = links.size();
-  const std::vector<std::size_t> size = region_sizes(sets, n);
+  const std::vector<std::size_t> size = region_sizes(sets, where);
   std::map<std::size_t, std::map<std::size_t, std::size_t>> shared; // small root -> root -> links
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -517,10 +558,12 @@ inline bool merge_small_regions_once(const std::vector<std::vector<std::size_t>>
   return !merges.empty();
 }
 
-/// Merges the regions smaller than `smallest` points into the region they share most links
+/// Merges the regions with fewer than `smallest` points into the region they share most links
 /// with (crossing links included: a sliver of band on the wrong side of its curve joins the
 /// face around it), round after round; regions left small without any link are unassigned
-/// (outliers). Then numbers the regions 0, 1, ... by their smallest point.
+/// (outliers). The points on a crease that no curve marks do not count: where noise blurs such
+/// a crease, they would make faces of the few clear points between them. Then numbers the
+/// regions 0, 1, ... by their smallest point.
 inline void merge_small_regions(const std::vector<std::vector<std::size_t>>& links, std::size_t smallest,
                                 Patch_labels& labels)
 {
@@ -530,8 +573,8 @@ inline void merge_small_regions(const std::vector<std::vector<std::size_t>>& lin
     if(labels.label[i] != no_index)
       sets.unite(i, labels.label[i]);
   for(bool merged = true; merged;)
-    merged = merge_small_regions_once(links, smallest, sets);
-  const std::vector<std::size_t> size = region_sizes(sets, n);
+    merged = merge_small_regions_once(links, labels.where, smallest, sets);
+  const std::vector<std::size_t> size = region_sizes(sets, labels.where);
   std::vector<std::size_t> number(n, no_index);
   labels.number_of_patches = 0;
   for(std::size_t i = 0; i < n; ++i)
