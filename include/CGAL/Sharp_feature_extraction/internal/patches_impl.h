@@ -160,30 +160,39 @@ public:
     m_corner_index.build<CGAL::Sequential_tag>(m_corner_points);
   }
 
-  /// The surface, among those of `landmark`, that passes closest to `x`.
-  std::size_t side(std::size_t landmark, const Vec3& x) const
+  /// The surface, among those of `landmark`, that passes closest to `x`, and by how much `x`
+  /// is closer to it than to the next closest (infinite with one surface).
+  struct Nearest_surface
+  {
+    std::size_t side = 0;
+    double clearance = std::numeric_limits<double>::infinity();
+  };
+
+  Nearest_surface nearest_surface(std::size_t landmark, const Vec3& x) const
   {
     const Vec3 d = x - point(landmark);
     const std::vector<Vec3>& normals = m_normals[landmark];
-    std::size_t closest = 0;
-    for(std::size_t k = 1; k < normals.size(); ++k)
-      if(std::abs(normals[k].dot(d)) < std::abs(normals[closest].dot(d)))
-        closest = k;
-    return closest;
+    Nearest_surface nearest;
+    double closest = std::numeric_limits<double>::infinity(), next = closest;
+    for(std::size_t k = 0; k < normals.size(); ++k)
+    {
+      const double distance = std::abs(normals[k].dot(d));
+      if(distance < closest)
+      {
+        next = closest;
+        closest = distance;
+        nearest.side = k;
+      }
+      else
+        next = (std::min)(next, distance);
+    }
+    if(normals.size() >= 2)
+      nearest.clearance = next - closest;
+    return nearest;
   }
 
-  /// How much closer `x` is to the surface of `landmark` it lies on than to the next closest.
-  double clearance(std::size_t landmark, const Vec3& x) const
-  {
-    const Vec3 d = x - point(landmark);
-    std::vector<double> distances;
-    for(const Vec3& n : m_normals[landmark])
-      distances.push_back(std::abs(n.dot(d)));
-    if(distances.size() < 2)
-      return std::numeric_limits<double>::infinity();
-    std::partial_sort(distances.begin(), distances.begin() + 2, distances.end());
-    return distances[1] - distances[0];
-  }
+  /// The surface, among those of `landmark`, that passes closest to `x`.
+  std::size_t side(std::size_t landmark, const Vec3& x) const { return nearest_surface(landmark, x).side; }
 
   /// Where `x` lies: by the nearest corner within `band`, else by the nearest curve vertex
   /// within `band`; clearly on its side if its clearance is `margin` or more.
@@ -201,8 +210,9 @@ public:
     }
     if(where.landmark != no_index)
     {
-      where.side = side(where.landmark, x);
-      where.clear = clearance(where.landmark, x) >= margin;
+      const Nearest_surface nearest = nearest_surface(where.landmark, x);
+      where.side = nearest.side;
+      where.clear = nearest.clearance >= margin;
     }
     return where;
   }
@@ -338,10 +348,10 @@ bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks,
   // sees the other end on that side; it grows a region when its ends are mutual near neighbours
   auto sees_on_its_side = [&](std::size_t i, std::size_t j) {
     const Crease_side& where = labels.where[i];
-    return where.clear
-           && (where.landmark == no_index
-               || (landmarks.side(where.landmark, points[j]) == where.side
-                   && landmarks.clearance(where.landmark, points[j]) >= margin));
+    if(!where.clear || where.landmark == no_index)
+      return where.clear;
+    const auto seen = landmarks.nearest_surface(where.landmark, points[j]);
+    return seen.side == where.side && seen.clearance >= margin;
   };
   Disjoint_sets sets(n);
   for(std::size_t i = 0; i < n; ++i)
