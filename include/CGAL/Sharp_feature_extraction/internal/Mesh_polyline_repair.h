@@ -455,7 +455,7 @@ inline std::pair<std::size_t, std::size_t> conflicting_curves(const Mesh_3_polyl
 /// curves left.
 template <typename Curve, typename Conflict>
 void drop_shorter_of_conflicting_curves(std::vector<Curve>& curves, const std::vector<Conflict>& conflicts,
-                                                     Mesh_3_polyline_repair_report& report)
+                                        Mesh_3_polyline_repair_report& report)
 {
   std::vector<bool> dropped(curves.size(), false);
   for(const Conflict& conflict : conflicts) {
