@@ -143,7 +143,8 @@ rc::Polyline_projection_settings projection_settings(double s)
   settings.maximal_move = 2 * s;
   settings.clearance = 3 * s;
   settings.clearance_step = 0.25 * s;
-  settings.cut_margin = 3 * s;
+  // the clearance plus an edge size of 3 s, as in the reconstruction
+  settings.cut_margin = 6 * s;
   settings.minimum_length = 3 * s;
   return settings;
 }
@@ -281,9 +282,10 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
     // within a spacing of the sphere, on both sides
     const double r = 1 + ((i % 2) ? 0.8 : -0.8) * s;
     near_surface.points.push_back(Point_3(r * std::cos(a), r * std::sin(a), 0));
-    // the middle vertex 2.5 spacings out: its neighbours within the margin go too
+    // on the other side of the sphere (the cut reaches every curve within the margin), the
+    // middle vertex 2.5 spacings out: its neighbours within the margin go too
     const double r_far = (i == steps / 2) ? 1 + 2.5 * s : 1.;
-    with_far_vertex.points.push_back(Point_3(r_far * std::cos(a), r_far * std::sin(a), 1e-3));
+    with_far_vertex.points.push_back(Point_3(-r_far * std::cos(a), -r_far * std::sin(a), 1e-3));
   }
   std::vector<Curve> curves = {near_surface, with_far_vertex};
   const rc::Polyline_projection_settings settings = projection_settings(s);
@@ -304,6 +306,44 @@ TEST_CASE("curve vertices off the implicit surface are moved onto it, and a curv
       CHECK(std::sqrt(CGAL::squared_distance(p, far_vertex)) > settings.cut_margin);
     CHECK(curves[piece].points.size() >= std::size_t(steps / 2 - 2 * settings.cut_margin / s));
   }
+}
+
+TEST_CASE("where a curve is not protectable next to a corner, every curve meeting there is cut a "
+          "margin away, not only that one: no protected end stays at a corner whose other creases "
+          "are not protected (Mesh_3 refines onto such a corner without end: pinion, 25k points, "
+          "noise 0, seed 1)",
+          "[meshing]")
+{
+  // the plane z = 0 as a signed distance; two curves leave the corner at the origin along x and
+  // y, vertices s/2 apart; the first vertices of the first one, up to 1.5 s from the corner,
+  // are 2.5 s above the plane, beyond the allowed move
+  auto plane = [](const Point_3& x) { return x.z(); };
+  const double s = 0.01;
+  const rc::Polyline_projection_settings settings = projection_settings(s);
+  const double step = 0.5 * s;
+  const int steps = 40;
+  Curve along_x, along_y;
+  for(int i = 0; i <= steps; ++i) {
+    const double lifted = (i > 0 && i * step <= 1.5 * s) ? 2.5 * s : 0.;
+    along_x.points.push_back(Point_3(i * step, 0, lifted));
+    along_y.points.push_back(Point_3(0, i * step, 0));
+  }
+  std::vector<Curve> curves = {along_x, along_y};
+  rc::Polyline_projection_counts counts;
+  rc::project_polylines_onto_surface<K>(curves, plane, settings, counts);
+  CHECK(counts.cut_off_surface == 2);
+  REQUIRE(curves.size() == 2);
+  for(const Curve& c : curves)
+    for(const Point_3& p : c.points)
+      for(const Point_3& q : along_x.points)
+        if(q.z() > 0)
+          CHECK(std::sqrt(CGAL::squared_distance(p, q)) >= settings.cut_margin);
+  // each keeps the rest of its length, up to its far end
+  const double kept_length = steps * step - 1.5 * s - settings.cut_margin - step;
+  CHECK(curves[0].points.back() == along_x.points.back());
+  CHECK(curves[1].points.back() == along_y.points.back());
+  for(const Curve& c : curves)
+    CHECK(CGAL::Sharp_feature_extraction::internal::mesh_polylines::curve_length(c) >= kept_length);
 }
 
 TEST_CASE("a curve on a wall or across a gap narrower than the clearance (Mesh_3's protecting balls "

@@ -434,26 +434,39 @@ void split_sharp_turns(std::vector<Curve>& curves, double reach, double angle_de
   apply_splits(curves, splits);
 }
 
-/// The last resort of the repair, also for curves moved after it: of two curves that come
-/// closer than `tolerance` without sharing a point there (an unshared contact, as listed by
-/// `find_mesh_3_polyline_problems()`), the shorter is dropped (a curve that comes back onto
-/// itself is dropped too). Without it that crease is meshed from the implicit surface alone;
-/// with it Mesh_3 would shrink its protecting balls to the gap and not finish.
-template <typename GeomTraits>
-void drop_polylines_in_contact(std::vector<Feature_polyline<GeomTraits>>& curves,
-                                    double tolerance, Mesh_3_polyline_repair_report& report)
+/// The curves a conflict names: two curves, or one curve twice (a curve in conflict with itself).
+inline std::pair<std::size_t, std::size_t> conflicting_curves(const Unshared_contact& contact)
 {
-  typedef Feature_polyline<GeomTraits> Curve;
+  return std::make_pair(contact.a, contact.b);
+}
+
+/// The curves a problem of `find_contract_violations()` names (see `conflicting_curves()`).
+inline std::pair<std::size_t, std::size_t> conflicting_curves(const Mesh_3_polyline_problem& problem)
+{
+  return std::make_pair(problem.polyline, problem.other_polyline);
+}
+
+/// The last resort against curves Mesh_3 cannot protect: of the two curves of each conflict
+/// (an `Unshared_contact` or a `Mesh_3_polyline_problem`, see `conflicting_curves()`), the
+/// shorter is dropped, unless one of them is dropped already; a curve in conflict with itself
+/// is dropped. Without it that crease is meshed from the implicit surface alone; with it
+/// Mesh_3 would shrink its protecting balls to the gap and not finish, or fail an assertion.
+/// Counts the drops in `report.dropped_in_contact` and sets `report.output_polylines` to the
+/// curves left.
+template <typename Curve, typename Conflict>
+void drop_shorter_of_conflicting_curves(std::vector<Curve>& curves, const std::vector<Conflict>& conflicts,
+                                        Mesh_3_polyline_repair_report& report)
+{
   std::vector<bool> dropped(curves.size(), false);
-  for(const Unshared_contact& contact :
-      find_unshared_contacts<Curve, typename GeomTraits::Point_3>(curves, tolerance)) {
-    if(dropped[contact.a] || dropped[contact.b])
+  for(const Conflict& conflict : conflicts) {
+    const std::pair<std::size_t, std::size_t> c = conflicting_curves(conflict);
+    if(dropped[c.first] || dropped[c.second])
       continue;
-    dropped[curve_length(curves[contact.a]) < curve_length(curves[contact.b]) ? contact.a : contact.b] = true;
+    dropped[curve_length(curves[c.first]) < curve_length(curves[c.second]) ? c.first : c.second] = true;
     ++report.dropped_in_contact;
   }
-  report.output_polylines -= std::count(dropped.begin(), dropped.end(), true);
   erase_marked(curves, dropped);
+  report.output_polylines = curves.size();
 }
 
 /// removes the non-finite and repeated points, and the normals that do not match the points;
@@ -553,8 +566,9 @@ Mesh_3_polyline_repair_report repair_feature_polylines(std::vector<Feature_polyl
   }
   const std::size_t closed_after = count_closed_loops(curves);
   report.closed_loops = closed_after > closed_before ? closed_after - closed_before : 0;
-  report.output_polylines = curves.size();
-  drop_polylines_in_contact(curves, tol, report);
+  // the last resort: two curves that still come closer than the tolerance without sharing a
+  // point there (an unshared contact, as `find_mesh_3_polyline_problems()` lists them)
+  drop_shorter_of_conflicting_curves(curves, find_unshared_contacts<Curve, Point_3>(curves, tol), report);
   return report;
 }
 

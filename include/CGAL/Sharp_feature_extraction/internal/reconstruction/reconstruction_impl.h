@@ -73,9 +73,6 @@ struct Reconstruction_constants
   /// 1.5 s off (at the shared corners, where a third surface rounds the two-surface model),
   /// those of curves 3 s or more from any true crease up to 38 s, or find no zero at all.
   static constexpr double maximal_move_onto_surface = 2;
-  /// The pieces of a cut polyline end this far from the cut, two repair tolerances: a curve
-  /// that leaves the cut point at 30 degrees or more passes their new ends farther than one.
-  static constexpr double cut_margin = 3;
   /// Step of the central differences of that projection: small against every feature of the
   /// surface, large against the solver's noise.
   static constexpr double surface_projection_step = 0.05;
@@ -302,35 +299,17 @@ inline void add_repair_pass(Mesh_3_polyline_repair_report& total, const Mesh_3_p
   total.discarded_normals += pass.discarded_normals;
 }
 
-/// drops the polylines that `problems` name: the polyline of a problem of its own, the shorter
-/// of the two of a problem between two.
-template <typename GeomTraits>
-void drop_polylines_with_problems(std::vector<Feature_polyline<GeomTraits>>& curves,
-                                  const std::vector<Mesh_3_polyline_problem>& problems,
-                                  Mesh_3_polyline_repair_report& report)
-{
-  std::vector<bool> dropped(curves.size(), false);
-  for(const Mesh_3_polyline_problem& problem : problems) {
-    const std::size_t a = problem.polyline, b = problem.other_polyline;
-    if(dropped[a] || dropped[b])
-      continue;
-    dropped[mesh_polylines::curve_length(curves[b]) < mesh_polylines::curve_length(curves[a]) ? b : a] = true;
-    ++report.dropped_in_contact;
-  }
-  mesh_polylines::erase_marked(curves, dropped);
-  report.output_polylines = curves.size();
-}
-
 /// The protected vertices onto the surface Mesh_3 will mesh, the curves cut where they are off
 /// it or too near another sheet of it (see `project_polylines_onto_surface()`). The repair of
 /// the curves ran before: moving their vertices (onto the fitted creases, then onto the
 /// implicit surface) and cutting them can undo it (ends of pieces near other curves, vertices
 /// of two curves moved within the tolerance of each other, sharp turns), and Mesh_3 then fails
 /// an assertion (pinion, 25k points, noise 0, seed 3: 8 unshared ends and 12 unshared contacts
-/// where four cut pieces meet, 27 sharp turns; seed 1: 27 sharp turns). So while the curves fail the check, the repair runs again on them and
-/// the vertices it moved are projected again (the others are on the surface already and stay
-/// exactly where they are, so shared points stay shared); a curve still named by a problem
-/// after `Reconstruction_constants::contract_passes` passes is dropped.
+/// where four cut pieces meet, 27 sharp turns; seed 1: 27 sharp turns). So while the curves
+/// fail the check, the repair runs again on them and the vertices it moved are projected again
+/// (the others are on the surface already and stay exactly where they are, so shared points
+/// stay shared); of the curves still named by a problem after
+/// `Reconstruction_constants::contract_passes` passes, the shorter of each problem is dropped.
 template <typename GeomTraits, typename Function>
 void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curves, const Function& function,
                                  double s, const mesh_polylines::Repair_settings& repair,
@@ -342,7 +321,10 @@ void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curv
   projection.maximal_move = C::maximal_move_onto_surface * s;
   projection.clearance = C::clearance_per_edge_size * report.edge_size;
   projection.clearance_step = C::clearance_step * s;
-  projection.cut_margin = C::cut_margin * s;
+  // a protecting ball, up to the edge size, around a vertex kept this far from an unprotectable
+  // one does not reach what made that vertex unprotectable (another sheet within the clearance
+  // of it, or no surface near it)
+  projection.cut_margin = projection.clearance + report.edge_size;
   projection.minimum_length = C::minimum_polyline_length * s;
   Polyline_projection_counts counts;
   project_polylines_onto_surface(curves, function, projection, counts);
@@ -354,7 +336,11 @@ void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curv
     project_polylines_onto_surface(curves, function, projection, counts);
     problems = mesh_polylines::find_contract_violations(curves, tolerances);
   }
-  drop_polylines_with_problems(curves, problems, report.repair_after_projection);
+  mesh_polylines::drop_shorter_of_conflicting_curves(curves, problems, report.repair_after_projection);
+  // The problems left on the protected curves: those of the last check whose curves all stay.
+  // There are none: each problem names a curve just dropped, and dropping curves adds no
+  // problem (the check looks at the curves one by one and two by two), so
+  // `report.remaining_polyline_problems` stays empty without a second check.
   report.moved_onto_surface = counts.moved_onto_surface;
   report.cut_off_surface = counts.cut_off_surface;
   report.cut_near_other_sheet = counts.cut_near_other_sheet;
@@ -456,8 +442,6 @@ reconstruct(const std::vector<typename GeomTraits::Point_3>& points, const Featu
   function.base_scale = 1. / gradient_norm(poisson, pwn, s);
   if(settings.protect_polylines)
     prepare_protected_polylines(curves, function, s, repair, report);
-  report.remaining_polyline_problems =
-    mesh_polylines::find_contract_violations(curves, mesh_polylines::Contract_tolerances{repair.tolerance});
   const typename GeomTraits::Sphere_3 bound = bounding_sphere<GeomTraits>(points, function, pwn, s);
   report.seconds_poisson = seconds_since(start);
   if(!progress(Progress_shares::poisson))
