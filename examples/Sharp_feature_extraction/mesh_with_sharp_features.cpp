@@ -228,8 +228,6 @@ void write_summary(std::ostream& out, std::size_t points, const CGAL::Surface_re
         << r.cut_off_surface << " curves cut off the surface, " << r.cut_near_other_sheet
         << " near another sheet of it\n"
         << "curves repaired again on the surface: " << r.repair_after_projection.summary() << "\n";
-  for(const auto& problem : r.remaining_polyline_problems)
-    out << "  curve problem left: " << problem.description << "\n";
   out << "normals: " << r.corrected_normals << " corrected near creases, " << r.unoriented_points
       << " left unoriented (dropped)\nsizes: facet " << r.facet_size << ", distance " << r.facet_distance
       << ", edge " << r.edge_size << ", angle " << r.facet_angle << "\nmesh: " << check.summary()
@@ -248,7 +246,6 @@ void write_stats(const std::string& path, std::size_t points, const CGAL::Surfac
         << "\ncurves_protected=" << r.protected_polylines.size() << "\ncurves_cut_off_surface=" << r.cut_off_surface
         << "\ncurves_cut_near_other_sheet=" << r.cut_near_other_sheet
         << "\ncurve_vertices_moved_onto_surface=" << r.moved_onto_surface
-        << "\ncurve_problems=" << r.remaining_polyline_problems.size()
         << "\ncorrected_normals=" << r.corrected_normals << "\ntriangles=" << check.triangles
         << "\nvertices=" << check.vertices << "\nclosed=" << check.closed() << "\nmanifold=" << check.manifold()
         << "\nself_intersecting=" << check.self_intersecting() << "\nstopped=" << r.stopped

@@ -65,8 +65,6 @@ struct Surface_reconstruction_report
   std::size_t cut_near_other_sheet = 0;
   /// Polyline vertices moved onto the crease of the two surfaces fitted on either side.
   std::size_t projected_onto_creases = 0;
-  /// What is still wrong with the protected polylines (empty when all is well).
-  std::vector<Mesh_3_polyline_problem> remaining_polyline_problems;
   /// The polylines protected in Mesh_3, as it got them (repaired, and moved onto the implicit
   /// surface); empty when `protect_polylines` is `false`.
   std::vector<Feature_polyline<GeomTraits>> protected_polylines;

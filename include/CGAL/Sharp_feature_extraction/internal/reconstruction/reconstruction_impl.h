@@ -336,11 +336,10 @@ void prepare_protected_polylines(std::vector<Feature_polyline<GeomTraits>>& curv
     project_polylines_onto_surface(curves, function, projection, counts);
     problems = mesh_polylines::find_contract_violations(curves, tolerances);
   }
+  // Each problem of the last check names a curve dropped here, and dropping curves adds no
+  // problem (the check looks at the curves one by one and two by two): the protected curves
+  // pass the check.
   mesh_polylines::drop_shorter_of_conflicting_curves(curves, problems, report.repair_after_projection);
-  // The problems left on the protected curves: those of the last check whose curves all stay.
-  // There are none: each problem names a curve just dropped, and dropping curves adds no
-  // problem (the check looks at the curves one by one and two by two), so
-  // `report.remaining_polyline_problems` stays empty without a second check.
   report.moved_onto_surface = counts.moved_onto_surface;
   report.cut_off_surface = counts.cut_off_surface;
   report.cut_near_other_sheet = counts.cut_near_other_sheet;
