@@ -118,6 +118,10 @@ struct Crease_side
   /// curves miss, or in a band and closer to the surface of its side than to the next by a
   /// margin (see `Patch_constants::side_clearance_spacings`).
   bool clear = true;
+
+  /// Whether the point lies on a crease that no curve marks: outside the bands, yet not clear
+  /// (see `mark_creases_without_curve()`). It has no side.
+  bool on_crease_without_curve() const { return !clear && landmark == no_index; }
 };
 
 /// The places that tell the sides of the creases: every curve vertex, with the normals of its
@@ -382,7 +386,7 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
        for(std::size_t i = first; i < last; ++i)
        {
          const Crease_side& where = labels.where[i];
-         if(where.clear || where.landmark == no_index)
+         if(where.clear || where.on_crease_without_curve())
            continue;
          clear.index.nearest(points[i], Patch_constants::band_candidates, nearest);
          for(std::size_t k : nearest)
@@ -395,7 +399,7 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
      }))
     return false;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(!labels.where[i].clear && labels.where[i].landmark != no_index)
+    if(!labels.where[i].clear && !labels.where[i].on_crease_without_curve())
       labels.label[i] = assigned[i];
   return true;
 }
@@ -527,7 +531,7 @@ inline std::vector<std::size_t> region_sizes(Disjoint_sets& sets, const std::vec
 {
   std::vector<std::size_t> size(where.size(), 0);
   for(std::size_t i = 0; i < where.size(); ++i)
-    if(where[i].clear || where[i].landmark != no_index)
+    if(!where[i].on_crease_without_curve())
       ++size[sets.find(i)];
   return size;
 }
