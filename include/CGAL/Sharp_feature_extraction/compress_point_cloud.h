@@ -28,8 +28,11 @@ constexpr double default_step_per_grid_spacing = 0.01;
 /// 2004, with JPEG 2000 in place of their shape-adaptive wavelet coder).
 ///
 /// Each piece is resampled on a grid of side `grid_spacing` over its least-squares plane: a
-/// cell holding a point (or surrounded by such cells) is in the piece's mask and takes the
-/// height, at its centre, of the plane fitted to the points of the 3 x 3 cells around it. The
+/// cell holding a point (or surrounded by such cells) is in the piece's mask. Its point lies at
+/// its centre, or, on the mask's boundary, a quarter cell towards the rest of the mask (where
+/// the points of a cell that the piece's edge crosses lie on average; both sides derive it from
+/// the mask), and takes the height there of the plane fitted to the points of the 3 x 3 cells
+/// around it. The
 /// images are packed into one atlas; the heights outside the masks are filled smoothly (a
 /// mask-weighted pyramid), and the atlas is coded with JPEG 2000's irreversible 9/7 wavelet,
 /// heights quantized with step `quantization_step` in every band. The masks are coded losslessly
