@@ -30,7 +30,7 @@
 #      (benchmark/Sharp_feature_extraction/scan_simulation.h) with the defects of real files;
 #   6. the report (benchmark/Sharp_feature_extraction/make_report.py);
 #   7. full run only: feature-protected meshing with and without the curves
-#      (scripts/bench_meshing.sh, which writes benchmark/results/meshing/MESHING.md). (benchmark/Sharp_feature_extraction/make_report.py).
+#      (scripts/bench_meshing.sh, which writes benchmark/results/meshing/MESHING.md).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
