@@ -166,6 +166,24 @@ TEST_CASE("a cloud of 200,000 copies of (0,0,0) yields no curve, and so does a c
   CHECK(mesh_3_contract_violation(result.network) == "");
 }
 
+TEST_CASE("two far outliers whose distances to a cube overflow (5e303 away) leave its 12 curves as they are",
+          "[bad input][outliers]")
+{
+  const std::vector<Point_3> cube = to_points<Point_3>(sample(unit_cube(), 6000, 0));
+  const CGAL::Sharp_features<K> reference = extract(cube);
+  REQUIRE(reference.network.polylines.size() == 12);
+  // Finite coordinates, but the square of their distance to the cube is beyond the doubles: a
+  // mean spacing over them was infinite, and so were the grid cells of stage 2 (NaN cell keys).
+  const double far = -5.3e303;
+  std::vector<Point_3> with_far = cube;
+  with_far.insert(with_far.end(), 2, Point_3(far, far, far));
+  const CGAL::Sharp_features<K> result = extract(with_far);
+  CHECK(std::isfinite(result.candidates.scales.spacing));
+  // The two points shift the regular subsample that measures the spacing: equal within 1%.
+  CHECK(result.candidates.scales.spacing == Approx(reference.candidates.scales.spacing).epsilon(0.01));
+  CHECK(result.network.polylines.size() == reference.network.polylines.size());
+}
+
 TEST_CASE("an exact plane has no sharp feature", "[bad input]")
 {
   check_empty(extract(to_points<Point_3>(sample(square_plane(), 10000, 0))));

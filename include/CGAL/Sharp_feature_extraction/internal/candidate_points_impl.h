@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -184,8 +183,9 @@ inline void choose_distances(const Scale_parameters& parameters, const Scale_sam
 }
 
 /// Spacing, noise, neighbourhood sizes and distances, from a regular subsample of the cloud,
-/// with the user's choices. Returns false when the cloud has no extent (all points identical)
-/// or when cancelled (then `progress` is cancelled).
+/// with the user's choices. Returns false when the cloud has no extent (all points identical,
+/// or so far apart that their distances overflow) or when cancelled (then `progress` is
+/// cancelled).
 template <typename ConcurrencyTag>
 bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
                    const Scale_parameters& parameters, Progress progress, Scales& scales)
@@ -193,7 +193,20 @@ bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
   Scale_samples samples;
   if(!measure_samples<ConcurrencyTag>(points, index, parameters.degree_fitting, progress.sub(0, 0.5), samples))
     return false;
-  scales.spacing = std::accumulate(samples.spacing.begin(), samples.spacing.end(), 0.) / double(samples.spacing.size());
+  // A distance between points more than about 1e154 apart overflows to infinity (its square
+  // does): a far outlier among ordinary coordinates. It says nothing of the sampling, so its
+  // samples are left out; a cloud that has no other is refused like one without extent.
+  double spacing_sum = 0;
+  std::size_t finite_spacings = 0;
+  for(double d : samples.spacing)
+    if(std::isfinite(d))
+    {
+      spacing_sum += d;
+      ++finite_spacings;
+    }
+  if(finite_spacings == 0)
+    return false;
+  scales.spacing = spacing_sum / double(finite_spacings);
   if(!(scales.spacing > 0))
     return false;
   scales.noise = median(samples.rms_residual);
