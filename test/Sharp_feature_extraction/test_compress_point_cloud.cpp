@@ -14,8 +14,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <set>
 #include <tuple>
 #include <stdexcept>
@@ -251,6 +253,25 @@ TEST_CASE("coder: the bitstream is the file, and a bad one is refused", "[compre
     other = bytes;
     other[4] = version;
     refused(other);                                                            // version
+  }
+  // Any height offset is a valid header, even one whose difference with a pixel overflows an
+  // int (found by fuzz_decompress_point_cloud): every point moves along its piece's normal by
+  // the change of offset times the quantizer step.
+  {
+    const std::size_t offset_at = 4 + 1 + 8 * 6; // magic, version, box, extent, grid spacing, step
+    double step;
+    std::memcpy(&step, bytes.data() + offset_at - 8, sizeof step);
+    std::int32_t offset;
+    std::memcpy(&offset, bytes.data() + offset_at, sizeof offset);
+    const std::int32_t forged_offset = std::numeric_limits<std::int32_t>::min() + 1;
+    other = bytes;
+    std::memcpy(other.data() + offset_at, &forged_offset, sizeof forged_offset);
+    std::vector<Point_3> shifted;
+    CGAL::decompress_point_cloud(other, shifted);
+    REQUIRE(shifted.size() == decoded.size());
+    const double shift = (double(offset) - double(forged_offset)) * step;
+    for(std::size_t i = 0; i < decoded.size(); i += (std::max)(std::size_t(1), decoded.size() / 10))
+      CHECK(std::sqrt(CGAL::squared_distance(shifted[i], decoded[i])) == Approx(shift).epsilon(1e-9));
   }
   std::vector<unsigned char> garbage(bytes.size());
   for(std::size_t i = 0; i < garbage.size(); ++i)

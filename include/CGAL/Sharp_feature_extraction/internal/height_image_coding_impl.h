@@ -569,7 +569,8 @@ inline std::vector<Vec3> decode_height_fields(const std::vector<unsigned char>& 
         const std::size_t i = std::size_t(layout.y[k] + y) * layout.width + layout.x[k] + x;
         if(images[0].pixels[i] == 0)
           continue;
-        const double h = double(images[1].pixels[i] - set.offset) * set.step;
+        // In doubles: a forged offset (any 32-bit value) minus a pixel overflows an int.
+        const double h = (double(images[1].pixels[i]) - double(set.offset)) * set.step;
         const Eigen::Vector2d at = cell_point(in_mask, set.sizes[k][0], set.sizes[k][1], x, y);
         decoded.push_back(frame.origin + frame.axes * Vec3(at.x() * set.cell, at.y() * set.cell, h));
       }
