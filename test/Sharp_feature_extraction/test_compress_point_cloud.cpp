@@ -273,6 +273,15 @@ TEST_CASE("coder: the bitstream is the file, and a bad one is refused", "[compre
     for(std::size_t i = 0; i < decoded.size(); i += (std::max)(std::size_t(1), decoded.size() / 10))
       CHECK(std::sqrt(CGAL::squared_distance(shifted[i], decoded[i])) == Approx(shift).epsilon(1e-9));
   }
+  // A finite but huge grid spacing: the decoded coordinates overflow (the fuzzer found such a
+  // header).
+  {
+    const std::size_t grid_spacing_at = 4 + 1 + 8 * 4; // magic, version, box, extent
+    const double huge = std::numeric_limits<double>::max();
+    other = bytes;
+    std::memcpy(other.data() + grid_spacing_at, &huge, sizeof huge);
+    refused(other);
+  }
   std::vector<unsigned char> garbage(bytes.size());
   for(std::size_t i = 0; i < garbage.size(); ++i)
     garbage[i] = static_cast<unsigned char>((i * 2654435761u) >> 13);

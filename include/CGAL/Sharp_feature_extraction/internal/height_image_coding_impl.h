@@ -573,6 +573,9 @@ inline std::vector<Vec3> decode_height_fields(const std::vector<unsigned char>& 
         const double h = (double(images[1].pixels[i]) - double(set.offset)) * set.step;
         const Eigen::Vector2d at = cell_point(in_mask, set.sizes[k][0], set.sizes[k][1], x, y);
         decoded.push_back(frame.origin + frame.axes * Vec3(at.x() * set.cell, at.y() * set.cell, h));
+        // Every field is finite, yet a forged header can make their products overflow.
+        if(!decoded.back().allFinite())
+          throw std::invalid_argument("decompress_point_cloud: invalid header (decoded coordinates overflow)");
       }
   }
   return decoded;
