@@ -121,6 +121,12 @@ struct Atlas_layout
 {
   unsigned int width = 0, height = 0;
   std::vector<unsigned int> x, y;
+
+  /// The index in the atlas (row by row) of cell (cx, cy) of image `k`.
+  std::size_t pixel(std::size_t k, unsigned int cx, unsigned int cy) const
+  {
+    return std::size_t(y[k] + cy) * width + x[k] + cx;
+  }
 };
 
 inline Atlas_layout pack_atlas(const std::vector<std::array<unsigned int, 2>>& sizes)
@@ -233,6 +239,20 @@ inline double height_at_cell(const std::vector<std::vector<std::size_t>>& cells,
   return count > 0 ? sum / double(count) : 0.;
 }
 
+/// Calls `f(xx, yy, dx, dy)` for each cell (xx, yy) = (x + dx, y + dy) of the 3 x 3 square
+/// around cell (x, y) that lies inside the width x height image.
+template <typename Function>
+void for_each_in_square(unsigned int width, unsigned int height, unsigned int x, unsigned int y, const Function& f)
+{
+  for(int dy = -1; dy <= 1; ++dy)
+    for(int dx = -1; dx <= 1; ++dx)
+    {
+      const long xx = long(x) + dx, yy = long(y) + dy;
+      if(xx >= 0 && yy >= 0 && xx < long(width) && yy < long(height))
+        f((unsigned int)xx, (unsigned int)yy, dx, dy);
+    }
+}
+
 /// Where the point of mask cell (x, y) lies, in cell units: the cell's centre, moved towards
 /// the rest of the mask on its boundary. A boundary cell holds points only on the side of the
 /// piece's edge that faces the mask; with the edge anywhere across the cell, their centroid lies
@@ -248,16 +268,13 @@ Eigen::Vector2d cell_point(const InMask& in_mask, unsigned int width, unsigned i
 {
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();
   int set = 0;
-  for(int dy = -1; dy <= 1; ++dy)
-    for(int dx = -1; dx <= 1; ++dx)
+  for_each_in_square(width, height, x, y, [&](unsigned int xx, unsigned int yy, int dx, int dy) {
+    if(in_mask(xx, yy))
     {
-      const long xx = long(x) + dx, yy = long(y) + dy;
-      if(xx >= 0 && yy >= 0 && xx < long(width) && yy < long(height) && in_mask(std::size_t(xx), std::size_t(yy)))
-      {
-        offset += Eigen::Vector2d(dx, dy);
-        ++set;
-      }
+      offset += Eigen::Vector2d(dx, dy);
+      ++set;
     }
+  });
   const double towards_mask = 0.5;
   return Eigen::Vector2d(x + 0.5, y + 0.5) + (set > 0 ? towards_mask / set : 0.) * offset;
 }
@@ -272,13 +289,10 @@ inline std::vector<std::uint8_t> rank_filter(const std::vector<std::uint8_t>& ma
     for(unsigned int x = 0; x < width; ++x)
     {
       int set = 0;
-      for(int dy = -1; dy <= 1; ++dy)
-        for(int dx = -1; dx <= 1; ++dx)
-        {
-          const long xx = long(x) + dx, yy = long(y) + dy;
-          if(xx >= 0 && yy >= 0 && xx < long(width) && yy < long(height) && mask[std::size_t(yy) * width + std::size_t(xx)])
-            ++set;
-        }
+      for_each_in_square(width, height, x, y, [&](unsigned int xx, unsigned int yy, int, int) {
+        if(mask[std::size_t(yy) * width + xx])
+          ++set;
+      });
       out[std::size_t(y) * width + x] = set >= at_least ? 1 : 0;
     }
   return out;
@@ -312,7 +326,7 @@ inline Height_image resample_height_field(const std::vector<Vec3>& points, const
   image.mask = rank_filter(rank_filter(rank_filter(occupied, width, height, dilation), width, height, erosion), width,
                            height, majority);
   image.heights.assign(cells.size(), 0.);
-  auto in_mask = [&](std::size_t x, std::size_t y) { return image.mask[y * width + x] != 0; };
+  auto in_mask = [&](unsigned int x, unsigned int y) { return image.mask[std::size_t(y) * width + x] != 0; };
   for(unsigned int y = 0; y < height; ++y)
     for(unsigned int x = 0; x < width; ++x)
       if(image.mask[std::size_t(y) * width + x])
@@ -435,7 +449,7 @@ inline void encode_height_fields(const std::vector<Vec3>& points, const std::vec
       for(unsigned int x = 0; x < images[k].width; ++x)
       {
         const std::size_t from = std::size_t(y) * images[k].width + x;
-        const std::size_t to = std::size_t(layout.y[k] + y) * layout.width + layout.x[k] + x;
+        const std::size_t to = layout.pixel(k, x, y);
         if(images[k].mask[from])
         {
           heights[to] = images[k].heights[from] / step;
@@ -560,13 +574,11 @@ inline std::vector<Vec3> decode_height_fields(const std::vector<unsigned char>& 
   for(std::size_t k = 0; k < count; ++k)
   {
     const Height_frame frame = dequantize_frame(set.frames[k], set.box);
-    auto in_mask = [&](std::size_t x, std::size_t y) {
-      return images[0].pixels[(layout.y[k] + y) * layout.width + layout.x[k] + x] != 0;
-    };
+    auto in_mask = [&](unsigned int x, unsigned int y) { return images[0].pixels[layout.pixel(k, x, y)] != 0; };
     for(unsigned int y = 0; y < set.sizes[k][1]; ++y)
       for(unsigned int x = 0; x < set.sizes[k][0]; ++x)
       {
-        const std::size_t i = std::size_t(layout.y[k] + y) * layout.width + layout.x[k] + x;
+        const std::size_t i = layout.pixel(k, x, y);
         if(images[0].pixels[i] == 0)
           continue;
         // In doubles: a forged offset (any 32-bit value) minus a pixel overflows an int.
