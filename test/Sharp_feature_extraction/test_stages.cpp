@@ -199,6 +199,28 @@ constexpr double completion_corner_tolerance = 0.25 * curve_step;
 
 } // namespace
 
+TEST_CASE("scales: the noise of a noisy plane is the RMS of its noise along the normal, also when it spans spacings",
+          "[stages][scales]")
+{
+  // Uniform noise in a ball of radius L has an RMS of L / sqrt(5) along any direction. At 1%
+  // and 2% of dB that RMS is 0.6 and 0.9 spacings here: the 36 nearest points of a point lie
+  // within its slab of the noise band, and their jets alone read 0.8 and 0.6 of the noise.
+  // The widened estimate is a lower quartile, a little low on neighbourhoods of a few dozen
+  // points (0.82 at 1% here).
+  const double tolerance = 0.2;
+  const Shape plane = square_plane();
+  for(double noise : {0.005, 0.01, 0.02})
+  {
+    const std::vector<Point_3> points = to_points<Point_3>(sample(plane, number_of_points, noise));
+    const CGAL::Sharp_feature_scales<double> scales =
+      CGAL::estimate_sharp_feature_scales<CGAL::Parallel_if_available_tag>(points);
+    const double rms_along_normal = noise * plane.bbox_diagonal() / std::sqrt(5.);
+    INFO("noise " << 100 * noise << "% dB: estimate " << scales.noise / rms_along_normal << " x its RMS along the normal, "
+                  << rms_along_normal / scales.spacing << " spacings");
+    CHECK(scales.noise == Approx(rms_along_normal).epsilon(tolerance));
+  }
+}
+
 TEST_CASE("stage 1: on an exact cube, residuals are high within one spacing of the edges and low far from them",
           "[stages][candidates]")
 {

@@ -24,7 +24,8 @@ struct Sharp_feature_scales
   /// neighbour. (CGAL's `compute_average_spacing()` with 6 neighbours is 1.6 times smaller on
   /// uniform samples of CGAL's fandisk, anchor and pinion.)
   FT spacing = 0;
-  /// Noise scale: median over all points of the RMS residual of their stage-1 jet fits.
+  /// Noise scale, about the RMS of the noise along the normal: the RMS residual of jets fitted
+  /// to neighbourhoods wider than the noise band (see `CGAL::estimate_sharp_feature_scales()`).
   FT noise = 0;
   /// Number of points in a stage-1 (candidate) neighbourhood.
   std::size_t candidate_neighbors = 0;

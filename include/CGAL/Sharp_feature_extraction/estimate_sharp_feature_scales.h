@@ -15,8 +15,11 @@ namespace CGAL {
 ///
 /// From a regular subsample of at most 20,000 points: the spacing s (mean distance to the 6th
 /// nearest neighbour), the noise (median RMS residual of the jets fitted to the 36 nearest
-/// points). From these: the stage-1 neighbourhood size (36 points, grown with the square of
-/// noise/s above 0.25, at most 400), the stage-2 size (twice as many), the RMLS tolerance
+/// points; when a neighbourhood 5 noise scales wide holds more points, the lower quartile of
+/// the RMS residuals of the jets fitted to that many, repeated while it grows). From these:
+/// the stage-1 neighbourhood size (36 points, grown with the square of noise/s above 0.25 for
+/// the noise over 36 points, or above 0.3 for the widened one if that asks for more, at most
+/// 400), the stage-2 size (twice as many), the RMLS tolerance
 /// (2.25 x noise, at least 0.05 s), the corner radius (median radius of a stage-2
 /// neighbourhood), the growth radius (median radius of a stage-1 neighbourhood) and the
 /// completion distance (max(7 s, 3 x growth radius)). A scale given as a named parameter
