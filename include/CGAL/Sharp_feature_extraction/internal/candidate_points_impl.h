@@ -243,9 +243,10 @@ bool measure_radii(const std::vector<Vec3>& points, const Point_index& index, co
 inline void choose_neighborhood_sizes(const Scale_parameters& parameters, std::size_t n, double narrow_noise,
                                       Scales& scales)
 {
-  const double noise_ratio = (std::max)(narrow_noise / noise_ratio_for_growth,
-                                        scales.noise / widened_noise_ratio_for_growth) / scales.spacing;
-  const double growth = (std::max)(1., noise_ratio * noise_ratio);
+  // The noise-to-spacing ratio in units of its growth threshold, the larger of the two estimates'.
+  const double ratio_over_threshold = (std::max)(narrow_noise / noise_ratio_for_growth,
+                                                 scales.noise / widened_noise_ratio_for_growth) / scales.spacing;
+  const double growth = (std::max)(1., ratio_over_threshold * ratio_over_threshold);
   auto within_bounds = [n](std::size_t k) { return (std::max<std::size_t>)(minimum_neighbors, (std::min)(k, n)); };
   scales.candidate_neighbors = within_bounds(parameters.candidate_neighbors > 0
     ? parameters.candidate_neighbors
