@@ -578,9 +578,9 @@ inline std::vector<Vec3> decode_height_fields(const std::vector<unsigned char>& 
     for(unsigned int y = 0; y < set.sizes[k][1]; ++y)
       for(unsigned int x = 0; x < set.sizes[k][0]; ++x)
       {
-        const std::size_t i = layout.pixel(k, x, y);
-        if(images[0].pixels[i] == 0)
+        if(!in_mask(x, y))
           continue;
+        const std::size_t i = layout.pixel(k, x, y);
         // In doubles: a forged offset (any 32-bit value) minus a pixel overflows an int.
         const double h = (double(images[1].pixels[i]) - double(set.offset)) * set.step;
         const Eigen::Vector2d at = cell_point(in_mask, set.sizes[k][0], set.sizes[k][1], x, y);
