@@ -688,7 +688,8 @@ def write_report(data, report, quick):
             normal_rms = heavy["noise"] * diagonal / math.sqrt(5)
             w(f" There the noise band is {fmt(2 * heavy['noise'] * 100, 0)}% dB thick, and the noise along the normal "
               f"has an RMS of {fmt(normal_rms / heavy['scale_spacing'], 1)} spacings, but the noise estimate (from "
-              f"the residuals of jets fitted to the 36 nearest neighbours, which lie inside the band and absorb it) "
+              f"the residuals of jets fitted to neighbourhoods widened towards 5 noise scales, at most 400 points: "
+              f"at this noise they still lie inside the band and absorb it) "
               f"is {fmt(heavy['scale_noise'] / heavy['scale_spacing'], 2)} spacings. The neighbourhoods grown from "
               f"it hold {heavy['scale_candidate_neighbors']} and {heavy['scale_rmls_neighbors']} points, about as "
               "wide as the band: the fits see a slab, not a surface (issue 11).")
