@@ -381,6 +381,7 @@ py::dict scales_dict(const CGAL::Sharp_feature_scales<double>& s)
   d["corner_radius"] = s.corner_radius;
   d["growth_radius"] = s.growth_radius;
   d["completion_distance"] = s.completion_distance;
+  d["sampled_fraction"] = s.sampled_fraction;
   return d;
 }
 
@@ -489,6 +490,9 @@ Scales read_scales(const py::handle& object)
   s.corner_radius = read_real("corner_radius", field("corner_radius"));
   s.growth_radius = read_real("growth_radius", field("growth_radius"));
   s.completion_distance = read_real("completion_distance", field("completion_distance"));
+  s.sampled_fraction = read_real("sampled_fraction", field("sampled_fraction"));
+  if(!(s.sampled_fraction > 0) || s.sampled_fraction > 1)
+    throw py::value_error("scales: sampled_fraction must be in (0, 1]");
   return s;
 }
 

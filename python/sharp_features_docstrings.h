@@ -118,7 +118,7 @@ constexpr const char* scales = R"doc(The scales the extraction used, derived fro
 
 A dict with the fields of CGAL::Sharp_feature_scales: spacing, noise, candidate_neighbors,
 candidate_radius, rmls_neighbors, residual_threshold, rmls_tolerance, corner_radius,
-growth_radius, completion_distance.)doc";
+growth_radius, completion_distance, sampled_fraction.)doc";
 
 constexpr const char* timings = R"doc(Wall-clock seconds of each step.
 

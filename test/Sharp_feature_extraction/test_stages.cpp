@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <cstddef>
 #include <iostream>
 #include <map>
@@ -219,6 +221,96 @@ TEST_CASE("scales: the noise of a noisy plane is the RMS of its noise along the 
                   << rms_along_normal / scales.spacing << " spacings");
     CHECK(scales.noise == Approx(rms_along_normal).epsilon(tolerance));
   }
+}
+
+TEST_CASE("thinning: the kept points depend on the points alone, nest, and stand for the others as their nearest",
+          "[stages][scales]")
+{
+  namespace sfe = CGAL::Sharp_feature_extraction::internal;
+  // A noisy cube with every 10th point repeated: copies follow their first.
+  std::vector<Point_3> points = to_points<Point_3>(sample(unit_cube(), 4000, noisy));
+  for(std::size_t i = 0; i < 400; ++i)
+    points.push_back(points[10 * i]);
+  const auto indexed = [](const std::vector<Point_3>& cloud) {
+    sfe::Indexed_input input;
+    sfe::index_input_points<CGAL::Sequential_tag>(cloud, CGAL::parameters::default_values(), input);
+    return input;
+  };
+  sfe::Indexed_input once = indexed(points), twice = indexed(points), parallel = indexed(points);
+  const std::size_t distinct = once.points.size();
+  sfe::thin_input<CGAL::Sequential_tag>(0.25, once);
+  // The points that a fraction keeps include those of any smaller one; the threads change nothing.
+  sfe::thin_input<CGAL::Sequential_tag>(0.5, twice);
+  sfe::thin_input<CGAL::Sequential_tag>(0.25, twice);
+  CHECK(once.input_index == twice.input_index);
+  sfe::thin_input<CGAL::Parallel_if_available_tag>(0.25, parallel);
+  CHECK(once.input_index == parallel.input_index);
+  CHECK(once.position_of_input == parallel.position_of_input);
+  // Each point is kept with probability 1/4: within 5 standard deviations of a quarter.
+  const double expected = 0.25 * double(distinct), deviation = std::sqrt(expected * 0.75);
+  CHECK(std::abs(double(once.points.size()) - expected) < 5 * deviation);
+  // Every input point is represented by the nearest kept point (a kept one by itself).
+  for(std::size_t j = 0; j < points.size(); ++j)
+  {
+    const sfe::Vec3 p = sfe::to_vec3(points[j]);
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const sfe::Vec3& q : once.points)
+      nearest = (std::min)(nearest, (q - p).norm());
+    REQUIRE((once.points[once.position_of_input[j]] - p).norm() == nearest);
+  }
+  // A part of the cloud (a tile) keeps the points that the whole cloud keeps there.
+  std::vector<Point_3> half;
+  for(const Point_3& p : points)
+    if(p.x() < 0.5)
+      half.push_back(p);
+  sfe::Indexed_input part = indexed(half);
+  sfe::thin_input<CGAL::Sequential_tag>(0.25, part);
+  std::vector<std::size_t> kept_in_half, kept_in_part;
+  for(std::size_t i : once.input_index)
+    if(points[i].x() < 0.5)
+      kept_in_half.push_back(i);
+  for(std::size_t i : part.input_index)
+    kept_in_part.push_back(std::size_t(std::find(points.begin(), points.end(), half[i]) - points.begin()));
+  std::sort(kept_in_half.begin(), kept_in_half.end());
+  std::sort(kept_in_part.begin(), kept_in_part.end());
+  CHECK(kept_in_half == kept_in_part);
+}
+
+TEST_CASE("scales: where the noise calls for neighbourhoods of more than 400 points, 400 kept points span their radius",
+          "[stages][scales]")
+{
+  // Uniform noise of 7% dB on the unit square spans several spacings at 12,000 points: the
+  // noise calls for stage-1 neighbourhoods of k > 400 points (567). The cloud is thinned to
+  // 400 / k, and the stage-1 radius of the kept points is the radius of k points of the whole
+  // cloud (within 0.6%). With the neighbourhoods capped at 400 points instead, it was the
+  // radius of 400 points: sqrt(400 / k) of it, 0.84 here.
+  const double tolerance = 0.05;
+  const std::vector<Point_3> points = to_points<Point_3>(sample(square_plane(), 12000, 0.07));
+  const CGAL::Sharp_feature_extraction_context<K> estimated(points);
+  const CGAL::Sharp_feature_scales<double> scales = estimated.scales();
+  REQUIRE(scales.sampled_fraction < 1);
+  CHECK(scales.candidate_neighbors == 400);
+  // A context given these scales (a tile's, say) fits the same kept points.
+  const CGAL::Sharp_feature_extraction_context<K> given(points, scales);
+  CHECK(estimated.number_of_distinct_points() < points.size());
+  CHECK(given.number_of_distinct_points() == estimated.number_of_distinct_points());
+  // The median distance from a point of the whole cloud to its k-th nearest point.
+  const std::size_t k = std::size_t(400 / scales.sampled_fraction);
+  const std::size_t stride = 97;
+  std::vector<double> radii;
+  for(std::size_t i = 0; i < points.size(); i += stride)
+  {
+    std::vector<double> distances;
+    for(const Point_3& q : points)
+      distances.push_back(std::sqrt(CGAL::squared_distance(points[i], q)));
+    std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(k - 1), distances.end());
+    radii.push_back(distances[k - 1]);
+  }
+  std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
+  const double whole_cloud_radius = radii[radii.size() / 2];
+  INFO("sampled fraction " << scales.sampled_fraction << " (k = " << k << "), stage-1 radius "
+       << scales.candidate_radius << ", radius of k points of the whole cloud " << whole_cloud_radius);
+  CHECK(scales.candidate_radius == Approx(whole_cloud_radius).epsilon(tolerance));
 }
 
 TEST_CASE("stage 1: on an exact cube, residuals are high within one spacing of the edges and low far from them",

@@ -305,6 +305,8 @@ public:
     index(points, np);
     m_scales = Sharp_feature_extraction::internal::convert_scales<double>(scales);
     Sharp_feature_extraction::internal::override_scales(np, m_scales);
+    if(m_scales.sampled_fraction < 1)
+      Sharp_feature_extraction::internal::thin_input<ConcurrencyTag>(m_scales.sampled_fraction, m_input);
     m_construction_time = timer.time();
   }
 
@@ -317,7 +319,8 @@ public:
   /// The number of input points, copies included.
   std::size_t number_of_points() const { return m_input.input_size(); }
 
-  /// The number of distinct input points.
+  /// The number of distinct input points that the stages fit: all of them, unless the noise
+  /// made the context thin the cloud (see `Sharp_feature_scales::sampled_fraction`).
   std::size_t number_of_distinct_points() const { return m_input.points.size(); }
 
   /// Wall-clock time taken by the constructor, in seconds.

@@ -44,6 +44,13 @@ struct Sharp_feature_scales
   FT growth_radius = 0;
   /// Largest gap that completion bridges (stage 5).
   FT completion_distance = 0;
+  /// Fraction of the distinct input points that the stages fit: 1, unless the noise spans so
+  /// many spacings that the stage-1 neighbourhoods it calls for would hold more than 400
+  /// points. The cloud is then thinned to the fraction that leaves 400 in their radius, by a
+  /// hash of each point's coordinates (so that a tile keeps the points the whole cloud keeps;
+  /// see `CGAL::estimate_sharp_feature_scales()`). `spacing` and the neighbourhood sizes are
+  /// those of the kept points, and every other point takes the results of the nearest kept one.
+  FT sampled_fraction = 1;
 };
 
 /// \ingroup PkgSharpFeatureExtractionRef

@@ -19,7 +19,10 @@ namespace CGAL {
 /// the RMS residuals of the jets fitted to that many, repeated while it grows). From these:
 /// the stage-1 neighbourhood size (36 points, grown with the square of noise/s above 0.25 for
 /// the noise over 36 points, or above 0.3 for the widened one if that asks for more, at most
-/// 400), the stage-2 size (twice as many), the RMLS tolerance
+/// 400; where the noise asks for more, the cloud is thinned to the fraction 400 / that size,
+/// by a hash of each point's coordinates, and the scales are measured again on the kept points
+/// with 400-point neighbourhoods, which span the radius the noise asked for: see
+/// `Sharp_feature_scales::sampled_fraction`), the stage-2 size (twice as many), the RMLS tolerance
 /// (2.25 x noise, at least 0.05 s), the corner radius (median radius of a stage-2
 /// neighbourhood), the growth radius (median radius of a stage-1 neighbourhood) and the
 /// completion distance (max(7 s, 3 x growth radius)). A scale given as a named parameter

@@ -9,6 +9,7 @@
 
 #include <CGAL/Sharp_feature_extraction/internal/Kernel_conversion.h>
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
+#include <CGAL/Sharp_feature_extraction/internal/Progress.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
 #include <CGAL/hilbert_sort.h>
@@ -22,7 +23,10 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -204,6 +208,79 @@ void index_input_points(const PointRange& points, const NamedParameters& np, Ind
       out.position_of_input[j] = out.position_of_input[first[j]];
   read = std::vector<Vec3>();
   out.index.template build<ConcurrencyTag>(out.points);
+}
+
+/// One step of SplitMix64 (Steele, Lea and Flood 2014): its increment (the golden ratio in 64
+/// bits) and its two multipliers, which mix every input bit into every output bit.
+inline std::uint64_t splitmix64(std::uint64_t state)
+{
+  constexpr std::uint64_t increment = 0x9E3779B97F4A7C15ull;
+  constexpr std::uint64_t first_multiplier = 0xBF58476D1CE4E5B9ull, second_multiplier = 0x94D049BB133111EBull;
+  std::uint64_t z = state + increment;
+  z = (z ^ (z >> 30)) * first_multiplier;
+  z = (z ^ (z >> 27)) * second_multiplier;
+  return z ^ (z >> 31);
+}
+
+/// A number in [0, 1) drawn from the coordinates of `p` alone (SplitMix64 over their bits):
+/// whether a point is kept by `thin_input()` then depends on the point, not on its position in
+/// the cloud, so that a tile of the cloud keeps the points that the whole cloud keeps.
+inline double sampling_value(const Vec3& p)
+{
+  // The top 53 bits of the hash, the mantissa of a double, scaled by 2^-53.
+  constexpr int mantissa_bits = 53;
+  const double scale = std::ldexp(1., -mantissa_bits);
+  std::uint64_t h = 0;
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    const double x = p[axis] + 0.; // -0 becomes +0: equal points give equal bits
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    h = splitmix64(h ^ bits);
+  }
+  return double(h >> (64 - mantissa_bits)) * scale;
+}
+
+/// Keeps the points of `input` whose `sampling_value()` is below `fraction`, in their spatial
+/// order, with a new index; every other point (and its copies) is then represented by the
+/// nearest kept point, as a copy is by its first. The kept points of `fraction` include those
+/// of any smaller fraction. Returns false, leaving `input` as it is, when `fraction` keeps
+/// every point or none.
+template <typename ConcurrencyTag>
+bool thin_input(double fraction, Indexed_input& input)
+{
+  // Marks a point whose representative is not known yet.
+  constexpr std::size_t no_representative = std::size_t(-1);
+  const std::size_t n = input.points.size();
+  std::vector<std::size_t> kept_position(n, no_representative);
+  std::vector<Vec3> kept;
+  std::vector<std::size_t> kept_input_index;
+  for(std::size_t i = 0; i < n; ++i)
+    if(sampling_value(input.points[i]) < fraction)
+    {
+      kept_position[i] = kept.size();
+      kept.push_back(input.points[i]);
+      kept_input_index.push_back(input.input_index[i]);
+    }
+  if(kept.empty() || kept.size() == n)
+    return false;
+  const std::vector<Vec3> all = std::move(input.points);
+  input.points = std::move(kept);
+  input.input_index = std::move(kept_input_index);
+  input.index.template build<ConcurrencyTag>(input.points);
+  Progress untracked;
+  parallel_blocks<ConcurrencyTag>(n, untracked, [&](std::size_t first, std::size_t last) {
+    std::vector<std::size_t> nearest;
+    for(std::size_t i = first; i < last; ++i)
+      if(kept_position[i] == no_representative)
+      {
+        input.index.nearest(all[i], 1, nearest);
+        kept_position[i] = nearest.front();
+      }
+  });
+  for(std::size_t& position : input.position_of_input)
+    position = kept_position[position];
+  return true;
 }
 
 } // namespace internal

@@ -58,6 +58,7 @@ Sharp_feature_scales<TargetFT> convert_scales(const Sharp_feature_scales<SourceF
   out.corner_radius = value(s.corner_radius);
   out.growth_radius = value(s.growth_radius);
   out.completion_distance = value(s.completion_distance);
+  out.sampled_fraction = value(s.sampled_fraction);
   return out;
 }
 

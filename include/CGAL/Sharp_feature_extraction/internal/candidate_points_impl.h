@@ -27,8 +27,15 @@ namespace internal {
 constexpr std::size_t minimum_number_of_points = 20;
 /// Neighbourhood size of a stage-1 fit on noise-free data (the 2006 code's value).
 constexpr std::size_t base_candidate_neighbors = 36;
-/// Upper bound of the noise-grown stage-1 neighbourhood.
+/// Largest automatic stage-1 neighbourhood. Where the noise calls for more points (it then
+/// spans a spacing or more), the cloud is thinned instead (see `estimate_scales()`), so that
+/// this many kept points span the radius that the noise calls for: the neighbourhoods keep
+/// the width that averages the noise out at any density, and the cost of stages 1 and 2 (the
+/// number of points times the size of a neighbourhood) stops growing with the density.
 constexpr std::size_t maximum_candidate_neighbors = 400;
+/// A thinning keeps at least this many stage-2 neighbourhoods' worth of points (else the
+/// neighbourhoods are capped instead).
+constexpr std::size_t minimum_thinned_neighborhoods = 10;
 /// Noise-to-spacing ratio above which neighbourhoods grow (quadratically with the ratio), for
 /// the noise measured over the 36 nearest points (the sizes were chosen on it at noise up to
 /// 1% dB)...
@@ -236,21 +243,27 @@ bool measure_radii(const std::vector<Vec3>& points, const Point_index& index, co
   });
 }
 
-/// The neighbourhood sizes: grown with the square of the noise-to-spacing ratio (above
-/// `noise_ratio_for_growth` for `narrow_noise`, the noise over the 36 nearest points, and above
-/// `widened_noise_ratio_for_growth` for `scales.noise`) so that fits average the noise out, or
-/// as given; within [`minimum_neighbors`, n].
-inline void choose_neighborhood_sizes(const Scale_parameters& parameters, std::size_t n, double narrow_noise,
-                                      Scales& scales)
+/// The automatic stage-1 neighbourhood size: grown with the square of the noise-to-spacing
+/// ratio (above `noise_ratio_for_growth` for `narrow_noise`, the noise over the 36 nearest
+/// points, and above `widened_noise_ratio_for_growth` for `scales.noise`) so that fits average
+/// the noise out.
+inline double noise_grown_candidate_neighbors(double narrow_noise, const Scales& scales)
 {
   // The noise-to-spacing ratio in units of its growth threshold, the larger of the two estimates'.
   const double ratio_over_threshold = (std::max)(narrow_noise / noise_ratio_for_growth,
                                                  scales.noise / widened_noise_ratio_for_growth) / scales.spacing;
-  const double growth = (std::max)(1., ratio_over_threshold * ratio_over_threshold);
+  return double(base_candidate_neighbors) * (std::max)(1., ratio_over_threshold * ratio_over_threshold);
+}
+
+/// The neighbourhood sizes: `grown_candidate_neighbors` (see `noise_grown_candidate_neighbors()`),
+/// or as given; within [`minimum_neighbors`, n].
+inline void choose_neighborhood_sizes(const Scale_parameters& parameters, std::size_t n,
+                                      double grown_candidate_neighbors, Scales& scales)
+{
   auto within_bounds = [n](std::size_t k) { return (std::max<std::size_t>)(minimum_neighbors, (std::min)(k, n)); };
   scales.candidate_neighbors = within_bounds(parameters.candidate_neighbors > 0
     ? parameters.candidate_neighbors
-    : (std::min)(maximum_candidate_neighbors, std::size_t(double(base_candidate_neighbors) * growth)));
+    : std::size_t((std::min)(double(maximum_candidate_neighbors), grown_candidate_neighbors)));
   scales.rmls_neighbors = within_bounds(parameters.rmls_neighbors > 0
     ? parameters.rmls_neighbors : rmls_neighbors_per_candidate_neighbors * scales.candidate_neighbors);
 }
@@ -272,12 +285,14 @@ inline void choose_distances(const Scale_parameters& parameters, const Scale_sam
 }
 
 /// Spacing, noise, neighbourhood sizes and distances, from a regular subsample of the cloud,
-/// with the user's choices. Returns false when the cloud has no extent (all points identical,
-/// or so far apart that their distances overflow) or when cancelled (then `progress` is
-/// cancelled).
+/// with the user's choices, and the automatic stage-1 size that the noise calls for
+/// (`grown_candidate_neighbors`, before the bounds). Returns false when the cloud has no extent
+/// (all points identical, or so far apart that their distances overflow) or when cancelled
+/// (then `progress` is cancelled).
 template <typename ConcurrencyTag>
 bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
-                   const Scale_parameters& parameters, Progress progress, Scales& scales)
+                   const Scale_parameters& parameters, Progress progress, Scales& scales,
+                   double& grown_candidate_neighbors)
 {
   Scale_samples samples;
   if(!measure_samples<ConcurrencyTag>(points, index, parameters.degree_fitting, progress.sub(0, 0.4), samples))
@@ -304,7 +319,8 @@ bool derive_scales(const std::vector<Vec3>& points, const Point_index& index,
                                            (std::min)(base_candidate_neighbors, points.size()),
                                            median(samples.candidate_radius), samples, progress.sub(0.4, 0.7), scales))
     return false;
-  choose_neighborhood_sizes(parameters, points.size(), narrow_noise, scales);
+  grown_candidate_neighbors = noise_grown_candidate_neighbors(narrow_noise, scales);
+  choose_neighborhood_sizes(parameters, points.size(), grown_candidate_neighbors, scales);
   const bool first_pass_radii = scales.candidate_neighbors == (std::min)(base_candidate_neighbors, points.size())
     && scales.rmls_neighbors == (std::min)(rmls_neighbors_per_candidate_neighbors * base_candidate_neighbors, points.size());
   if(!first_pass_radii && !measure_radii<ConcurrencyTag>(points, index, scales, progress.sub(0.7, 1), samples))
@@ -334,20 +350,45 @@ inline double mean_residual_of_surface_fits(const std::vector<double>& residuals
   return count > 0 ? sum / double(count) : 0.;
 }
 
+/// The end of `estimate_scales()` when `derive_scales()` failed: false if cancelled, else all
+/// scales zero.
+inline bool without_scales(Progress& progress, Scales& scales)
+{
+  if(progress.cancelled())
+    return false;
+  scales = Scales();
+  return progress.report(1.);
+}
+
 /// The scales of `input` (see `Sharp_feature_scales`): all zero when the cloud has fewer than
-/// `minimum_number_of_points` distinct points or no extent. Returns false if cancelled.
+/// `minimum_number_of_points` distinct points or no extent. When the noise calls for automatic
+/// stage-1 neighbourhoods of more than `maximum_candidate_neighbors` points, `input` is thinned
+/// (see `thin_input()`) to the fraction that leaves that many in the same radius, and the scales
+/// are measured again on the kept points, with neighbourhoods of that many. Returns false if
+/// cancelled.
 template <typename ConcurrencyTag>
-bool estimate_scales(const Indexed_input& input, const Scale_parameters& parameters, Progress progress,
+bool estimate_scales(Indexed_input& input, const Scale_parameters& parameters, Progress progress,
                      Scales& scales)
 {
   scales = Scales();
-  if(input.points.size() >= minimum_number_of_points
-     && !derive_scales<ConcurrencyTag>(input.points, input.index, parameters, progress, scales))
-  {
-    if(progress.cancelled())
-      return false;
-    scales = Scales();
-  }
+  if(input.points.size() < minimum_number_of_points)
+    return progress.report(1.);
+  double grown = 0;
+  if(!derive_scales<ConcurrencyTag>(input.points, input.index, parameters, progress.sub(0, 0.5), scales, grown))
+    return without_scales(progress, scales);
+  const double fraction = double(maximum_candidate_neighbors) / grown;
+  const std::size_t smallest_kept =
+    minimum_thinned_neighborhoods * rmls_neighbors_per_candidate_neighbors * maximum_candidate_neighbors;
+  const bool automatic_sizes = parameters.candidate_neighbors == 0 && parameters.rmls_neighbors == 0;
+  if(!automatic_sizes || fraction >= 1 || double(input.points.size()) * fraction < double(smallest_kept)
+     || !thin_input<ConcurrencyTag>(fraction, input))
+    return progress.report(1.);
+  // Neighbourhoods of `maximum_candidate_neighbors` kept points span the radius the noise called for.
+  Scale_parameters thinned = parameters;
+  thinned.candidate_neighbors = maximum_candidate_neighbors;
+  if(!derive_scales<ConcurrencyTag>(input.points, input.index, thinned, progress.sub(0.5, 1), scales, grown))
+    return without_scales(progress, scales);
+  scales.sampled_fraction = fraction;
   return progress.report(1.);
 }
 
