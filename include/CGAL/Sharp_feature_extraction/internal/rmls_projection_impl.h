@@ -502,7 +502,7 @@ struct Surface_checks
   typedef Forward_search_constants Constants;
 
   Surface_checks(const Forward_search& search, const Scales& scales, const Projection_parameters& parameters)
-    : search(search), radius(search.radius()), reach(candidate_reach(search, scales)),
+    : search(search), radius(search.radius()), max_offset(largest_offset(search, scales)),
       cos_sharp(std::cos(radians(parameters.sharpness_angle))),
       step_tolerance(Constants::newton_step_tolerance * scales.spacing),
       coincident(corner_weight_floor * scales.spacing)
@@ -521,7 +521,7 @@ struct Surface_checks
   /// 1.59 -> 1.46. On noise-free data the whole stage-2 radius: the candidates of a cell share
   /// the neighbourhood of its first one (see `Candidate_cells`), whose stage-1 radius is not
   /// theirs, and the bound cost spool 0.954 -> 0.951 there (0.962 -> 0.956 with 5% outliers).
-  static double candidate_reach(const Forward_search& search, const Scales& scales)
+  static double largest_offset(const Forward_search& search, const Scales& scales)
   {
     const std::size_t k = scales.candidate_neighbors;
     if(!noise_dominates(scales) || k == 0 || k > search.local.size())
@@ -529,7 +529,7 @@ struct Surface_checks
     return (search.local[k - 1] - search.center()).norm();
   }
 
-  bool near_candidate(const Vec3& x, const Vec3& p) const { return (x - p).norm() <= reach; }
+  bool near_candidate(const Vec3& x, const Vec3& p) const { return (x - p).norm() <= max_offset; }
   bool distinct(const Vec3& na, const Vec3& nb) const { return std::abs(na.dot(nb)) <= cos_sharp; }
   bool supported(const Rmls_surface& s, const Vec3& x) const
   {
@@ -538,8 +538,8 @@ struct Surface_checks
 
   const Forward_search& search;
   /// The support gaps are relative to the radius of the neighbourhood, the offsets of the
-  /// projections bounded by the reach of the candidate (see `candidate_reach()`).
-  double radius, reach, cos_sharp, step_tolerance;
+  /// projections bounded by `max_offset` (see `largest_offset()`).
+  double radius, max_offset, cos_sharp, step_tolerance;
   /// Corner-to-edge distances below this count as 0 in the corner weight 1/|c - e|.
   double coincident;
   /// `coincident` relative to the spacing.
