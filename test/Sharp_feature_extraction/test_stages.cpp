@@ -14,9 +14,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <cstddef>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -306,8 +306,7 @@ TEST_CASE("scales: where the noise calls for neighbourhoods of more than 400 poi
     std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(k - 1), distances.end());
     radii.push_back(distances[k - 1]);
   }
-  std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2), radii.end());
-  const double whole_cloud_radius = radii[radii.size() / 2];
+  const double whole_cloud_radius = percentile(radii, 0.5);
   INFO("sampled fraction " << scales.sampled_fraction << " (k = " << k << "), stage-1 radius "
        << scales.candidate_radius << ", radius of k points of the whole cloud " << whole_cloud_radius);
   CHECK(scales.candidate_radius == Approx(whole_cloud_radius).epsilon(tolerance));
