@@ -491,8 +491,9 @@ Scales read_scales(const py::handle& object)
   s.growth_radius = read_real("growth_radius", field("growth_radius"));
   s.completion_distance = read_real("completion_distance", field("completion_distance"));
   s.sampled_fraction = read_real("sampled_fraction", field("sampled_fraction"));
-  if(!(s.sampled_fraction > 0) || s.sampled_fraction > 1)
-    throw py::value_error("scales: sampled_fraction must be in (0, 1]");
+  // The library's rules (ValueError through pybind11's translation of std::invalid_argument),
+  // also for the scales of an unpickled tile, which stitching does not check.
+  sfe_internal::require_valid_scales(s);
   return s;
 }
 

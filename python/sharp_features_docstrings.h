@@ -165,6 +165,12 @@ CGAL::tile_halo_width(): the points given to extract_tile() must be those within
 of the core box (along each axis), so that the tile's feature points are exactly those of the
 whole cloud. scales is the dict estimate_scales() returns; the keyword number_of_iterations
 (default 3) must be the one given to extract_tile().
+
+Raises
+------
+ValueError
+    scales lacks a field, a distance in it is negative or not finite, or its sampled_fraction is
+    not in (0, 1].
 )doc";
 
 constexpr const char* extract_tile = R"doc(Stages 1 to 3 on one tile: the feature points its core box owns.
@@ -183,7 +189,8 @@ TileResult
 Raises
 ------
 ValueError
-    A coordinate or a parameter is out of range, or box_min is not below box_max on every axis.
+    A coordinate, a parameter or a scale is out of range (see tile_halo_width()), or box_min is
+    not below box_max on every axis.
 Cancelled
     The progress function returned False.
 )doc";

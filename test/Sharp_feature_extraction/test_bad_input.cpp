@@ -5,9 +5,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Sharp_feature_extraction/extract_sharp_features.h>
+#include <CGAL/Sharp_feature_extraction/tile_halo_width.h>
 
 #include <catch2/catch.hpp>
 
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -227,6 +229,39 @@ TEST_CASE("out-of-range parameters are rejected with std::invalid_argument", "[b
   CHECK_THROWS_AS(run(CGAL::parameters::sharpness_angle(0.)), std::invalid_argument);
   CHECK_THROWS_AS(run(CGAL::parameters::sharpness_angle(90.)), std::invalid_argument);
   CHECK_THROWS_AS(run(CGAL::parameters::maximum_angle(-5.)), std::invalid_argument);
+}
+
+TEST_CASE("scales given to a context, to stage 2 or to the tile halo are checked", "[bad input]")
+{
+  typedef CGAL::Sharp_feature_scales<K::FT> Scales;
+  typedef CGAL::Sharp_feature_extraction_context<K, CGAL::Sequential_tag> Context;
+  const std::vector<Point_3> points = to_points<Point_3>(sample(unit_cube(), 500, 0));
+  const Scales estimated = CGAL::estimate_sharp_feature_scales<CGAL::Sequential_tag>(points);
+  CHECK_NOTHROW(Context(points, estimated));
+  CHECK_NOTHROW(Context(points, Scales())); // the all-zero scales of a cloud without extent
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::function<void(Scales&)>> breakages = {
+    [&](Scales& s) { s.spacing = nan; },          [&](Scales& s) { s.noise = -1; },
+    [&](Scales& s) { s.candidate_radius = inf; }, [&](Scales& s) { s.residual_threshold = nan; },
+    [&](Scales& s) { s.rmls_tolerance = -inf; },  [&](Scales& s) { s.corner_radius = nan; },
+    [&](Scales& s) { s.growth_radius = -0.5; },   [&](Scales& s) { s.completion_distance = inf; },
+    [&](Scales& s) { s.sampled_fraction = 0; },   [&](Scales& s) { s.sampled_fraction = 1.5; },
+    [&](Scales& s) { s.sampled_fraction = nan; }};
+  for(std::size_t i = 0; i < breakages.size(); ++i)
+  {
+    INFO("breakage " << i);
+    Scales bad = estimated;
+    breakages[i](bad);
+    CHECK_THROWS_AS(Context(points, bad), std::invalid_argument);
+    CHECK_THROWS_AS(CGAL::tile_halo_width(bad), std::invalid_argument);
+  }
+  // Stage 2 reads the scales that come with the candidates.
+  const Context context(points);
+  CGAL::Candidate_points<K> candidates;
+  REQUIRE(context.compute_candidate_points(candidates));
+  candidates.scales.rmls_tolerance = nan;
+  CGAL::Feature_point_set<K> features;
+  CHECK_THROWS_AS(context.rmls_project_candidates(candidates, features), std::invalid_argument);
 }
 
 TEST_CASE("stage functions accept empty input and reject candidate indices beyond the points", "[bad input]")

@@ -294,7 +294,8 @@ public:
   ///       given one}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
-  /// \throws std::invalid_argument if a coordinate is not finite or a parameter is out of range.
+  /// \throws std::invalid_argument if a coordinate is not finite, a parameter is out of range,
+  ///   or a scale is negative or not finite, or `scales.sampled_fraction` is not in (0, 1].
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   Sharp_feature_extraction_context(const PointRange& points, const Sharp_feature_scales<FT>& scales,
                                    const NamedParameters& np = parameters::default_values())
@@ -426,7 +427,8 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation.
-  /// \throws std::invalid_argument if a candidate index is out of the range of the points.
+  /// \throws std::invalid_argument if a candidate index is out of the range of the points, or
+  ///   a scale of `candidates.scales` is negative or not finite.
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool rmls_project_candidates(const Candidate_points<GeomTraits>& candidates, Feature_point_set<GeomTraits>& projected,
                                const NamedParameters& np = parameters::default_values()) const

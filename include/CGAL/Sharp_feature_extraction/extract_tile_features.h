@@ -77,8 +77,9 @@ namespace CGAL {
 /// A scale or `threshold_distance` (fixed by `scales`) and a parameter of stage 4 or 5 do not
 /// compile.
 /// \returns `false` if the callback interrupted the computation (`tile` is then partial).
-/// \throws std::invalid_argument if a coordinate is not finite, a parameter is out of range or
-///   `core` does not have min < max on every axis.
+/// \throws std::invalid_argument if a coordinate is not finite, a parameter is out of range, a
+///   scale is negative or not finite, `scales.sampled_fraction` is not in (0, 1], or `core`
+///   does not have min < max on every axis.
 template <typename ConcurrencyTag, typename PointRange, typename GeomTraits,
           typename NamedParameters = parameters::Default_named_parameters>
 bool extract_tile_features(const PointRange& points, const CGAL::Bbox_3& core,

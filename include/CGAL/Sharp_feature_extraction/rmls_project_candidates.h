@@ -99,7 +99,8 @@ namespace CGAL {
 /// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation.
 /// \throws std::invalid_argument if a coordinate is not finite, a candidate index is out of the
-///   range of the points or a parameter is out of range.
+///   range of the points, a parameter is out of range or a scale of `candidates.scales` is
+///   negative or not finite.
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
 bool rmls_project_candidates(

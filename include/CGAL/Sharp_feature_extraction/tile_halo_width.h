@@ -43,13 +43,17 @@ namespace CGAL {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns the halo width, a distance (0 for zero scales).
+/// \throws std::invalid_argument if a scale is negative or not finite, or the sampled fraction
+///   is not in (0, 1].
 template <typename FT, typename NamedParameters = parameters::Default_named_parameters>
 FT tile_halo_width(const Sharp_feature_scales<FT>& scales, const NamedParameters& np = parameters::default_values())
 {
   namespace sfe = Sharp_feature_extraction::internal;
   static_assert(sfe::holds_only_smoothing_parameters<NamedParameters>(),
                 "tile_halo_width: only number_of_iterations changes the halo");
-  return FT(sfe::halo_width(sfe::convert_scales<double>(scales), sfe::read_smoothing_parameters(np).passes));
+  const sfe::Scales working = sfe::convert_scales<double>(scales);
+  sfe::require_valid_scales(working);
+  return FT(sfe::halo_width(working, sfe::read_smoothing_parameters(np).passes));
 }
 
 } // namespace CGAL

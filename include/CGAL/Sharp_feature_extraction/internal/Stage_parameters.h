@@ -170,8 +170,26 @@ Completion_parameters read_completion_parameters(const NamedParameters& np, Comp
   return p;
 }
 
+/// Scales given by the user (see `Sharp_feature_scales`): every distance finite and
+/// non-negative, the sampled fraction in (0, 1]. The all-zero scales of a cloud without
+/// extent pass (the stages then find nothing).
+inline void require_valid_scales(const Sharp_feature_scales<double>& scales)
+{
+  using namespace parameter_reading;
+  require_distance(scales.spacing, "scales.spacing");
+  require_distance(scales.noise, "scales.noise");
+  require_distance(scales.candidate_radius, "scales.candidate_radius");
+  require_distance(scales.residual_threshold, "scales.residual_threshold");
+  require_distance(scales.rmls_tolerance, "scales.rmls_tolerance");
+  require_distance(scales.corner_radius, "scales.corner_radius");
+  require_distance(scales.growth_radius, "scales.growth_radius");
+  require_distance(scales.completion_distance, "scales.completion_distance");
+  require(scales.sampled_fraction > 0 && scales.sampled_fraction <= 1, "scales.sampled_fraction must be in (0, 1]");
+}
+
 /// Every scale that `np` gives replaces its value in `scales` (the scales derived from it do
-/// not follow: they were derived already).
+/// not follow: they were derived already); then all of them are checked (see
+/// `require_valid_scales()`).
 template <typename NamedParameters>
 void override_scales(const NamedParameters& np, Sharp_feature_scales<double>& scales)
 {
@@ -188,6 +206,7 @@ void override_scales(const NamedParameters& np, Sharp_feature_scales<double>& sc
     scales.growth_radius = given.growth_radius;
   if(given.completion_distance > 0)
     scales.completion_distance = given.completion_distance;
+  require_valid_scales(scales);
 }
 
 /// The tags of the parameters that set a scale (see `Sharp_feature_scales`).
