@@ -231,7 +231,7 @@ TEST_CASE("out-of-range parameters are rejected with std::invalid_argument", "[b
   CHECK_THROWS_AS(run(CGAL::parameters::maximum_angle(-5.)), std::invalid_argument);
 }
 
-TEST_CASE("scales given to a context, to stage 2 or to the tile halo are checked", "[bad input]")
+TEST_CASE("scales given to a context, to stages 2, 4 and 5 or to the tile halo are checked", "[bad input]")
 {
   typedef CGAL::Sharp_feature_scales<K::FT> Scales;
   typedef CGAL::Sharp_feature_extraction_context<K, CGAL::Sequential_tag> Context;
@@ -262,6 +262,14 @@ TEST_CASE("scales given to a context, to stage 2 or to the tile halo are checked
   candidates.scales.rmls_tolerance = nan;
   CGAL::Feature_point_set<K> features;
   CHECK_THROWS_AS(context.rmls_project_candidates(candidates, features), std::invalid_argument);
+  // Stages 4 and 5 read the scales that come with the feature points and the network.
+  features.scales = estimated;
+  features.scales.growth_radius = -1;
+  CGAL::Feature_curve_network<K> network;
+  CHECK_THROWS_AS(CGAL::grow_feature_polylines(features, network), std::invalid_argument);
+  network.scales = estimated;
+  network.scales.completion_distance = inf;
+  CHECK_THROWS_AS(CGAL::complete_feature_polylines(network), std::invalid_argument);
 }
 
 TEST_CASE("stage functions accept empty input and reject candidate indices beyond the points", "[bad input]")

@@ -507,6 +507,8 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \returns `false` if the callback interrupted the computation.
+  /// \throws std::invalid_argument if a parameter is out of range or a scale of
+  ///   `features.scales` is negative or not finite.
   template <typename NamedParameters = parameters::Default_named_parameters>
   bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features, Feature_curve_network<GeomTraits>& network,
                               const NamedParameters& np = parameters::default_values()) const
@@ -542,6 +544,8 @@ public:
   ///       `network.scales.completion_distance`}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
+  /// \throws std::invalid_argument if a parameter is out of range or a scale of
+  ///   `network.scales` is negative or not finite.
   template <typename NamedParameters = parameters::Default_named_parameters>
   void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
                                   const NamedParameters& np = parameters::default_values()) const

@@ -60,6 +60,8 @@ namespace CGAL {
 ///       `network.scales.completion_distance` for this call}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+/// \throws std::invalid_argument if a parameter is out of range or a scale of
+///   `network.scales` is negative or not finite.
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 void complete_feature_polylines(Feature_curve_network<GeomTraits>& network,
                                 const NamedParameters& np = parameters::default_values())

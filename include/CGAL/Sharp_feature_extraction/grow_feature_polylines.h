@@ -44,6 +44,8 @@ namespace CGAL {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns `false` if the callback interrupted the computation.
+/// \throws std::invalid_argument if a parameter is out of range or a scale of
+///   `features.scales` is negative or not finite.
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 bool grow_feature_polylines(const Feature_point_set<GeomTraits>& features,
                             Feature_curve_network<GeomTraits>& network,

@@ -100,7 +100,7 @@ std::vector<const Tile_features<GT>*> tiles_in_box_order(const TileRange& tiles)
 /// A parameter of stages 1 to 3, or a scale (fixed by the tiles), does not compile.
 /// \returns `false` if the callback interrupted the computation (the result is then partial).
 /// \throws std::invalid_argument if the tiles have different scales or overlapping core boxes,
-///   or a parameter is out of range.
+///   a parameter is out of range, or a scale of the tiles is negative or not finite.
 template <typename TileRange, typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 bool stitch_tile_features(const TileRange& tiles, Sharp_features<GeomTraits>& result,
                           const NamedParameters& np = parameters::default_values())
