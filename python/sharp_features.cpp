@@ -492,7 +492,7 @@ Scales read_scales(const py::handle& object)
   s.completion_distance = read_real("completion_distance", field("completion_distance"));
   s.sampled_fraction = read_real("sampled_fraction", field("sampled_fraction"));
   // The library's rules (ValueError through pybind11's translation of std::invalid_argument),
-  // also for the scales of an unpickled tile, which stitching does not check.
+  // here so that an unpickled tile's scales fail when it is read, not when it is stitched.
   sfe_internal::require_valid_scales(s);
   return s;
 }
