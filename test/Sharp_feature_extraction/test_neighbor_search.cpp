@@ -2,7 +2,9 @@
 // neighbourhoods of stage 1 are exactly the k nearest points (as the k-d tree finds them), on
 // clean, noisy, flat and duplicated clouds; and the candidate cells of stage 2 hold every
 // candidate exactly once, within one cell of side the given size; the surfaces of a cell serve
-// a candidate only where they explain its neighbourhood.
+// a candidate only where they explain its neighbourhood. The ranked neighbourhoods of stage 2
+// are the k nearest points in a canonical order, and its forward search's moment sums agree
+// with a direct covariance analysis.
 
 #include "analytic_shapes.h"
 
@@ -12,7 +14,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -69,7 +74,99 @@ std::size_t check_neighborhoods(const std::vector<sfe::Vec3>& points, std::size_
   return points.size();
 }
 
+/// Checks `nearest_ranked()` at every point of `points` in `order` (one workspace throughout,
+/// as a block of stage 2 does), and at `extra` points, against the k smallest (squared
+/// distance, index) pairs found by brute force. Returns the number of mismatched queries.
+std::size_t ranked_mismatches(const std::vector<sfe::Vec3>& points, const std::vector<std::size_t>& order,
+                              const std::vector<sfe::Vec3>& extra, std::size_t k)
+{
+  sfe::Point_index index;
+  index.build<CGAL::Sequential_tag>(points);
+  sfe::Point_index::Ranked_query query;
+  std::vector<sfe::Vec3> queries;
+  for(std::size_t i : order)
+    queries.push_back(points[i]);
+  queries.insert(queries.end(), extra.begin(), extra.end());
+  std::size_t mismatches = 0;
+  std::vector<std::size_t> got;
+  std::vector<std::pair<double, std::size_t>> all;
+  for(const sfe::Vec3& q : queries)
+  {
+    index.nearest_ranked(q, k, query, got);
+    all.clear();
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const double dx = points[i].x() - q.x(), dy = points[i].y() - q.y(), dz = points[i].z() - q.z();
+      all.emplace_back(dx * dx + dy * dy + dz * dz, i);
+    }
+    std::sort(all.begin(), all.end());
+    std::vector<std::size_t> expected;
+    for(std::size_t r = 0; r < (std::min)(k, all.size()); ++r)
+      expected.push_back(all[r].second);
+    if(got != expected)
+      ++mismatches;
+  }
+  return mismatches;
+}
+
 } // namespace
+
+TEST_CASE("ranked neighbourhoods of stage 2 are the k nearest points, ties by index, whatever the query before",
+          "[neighbors]")
+{
+  // Stage 2 answers each candidate from the ball of the previous one's k-th distance when it
+  // can: the result must not depend on which query came before (nor then on the threads).
+  const std::vector<sfe::Vec3> noisy = to_vec3(sample(chamfered_box(), 6000, 0.01));
+  std::vector<std::size_t> in_order(noisy.size()), scattered;
+  std::iota(in_order.begin(), in_order.end(), std::size_t(0));
+  for(std::size_t i = 0; i < noisy.size(); i += 7)
+    scattered.push_back((i * 7919) % noisy.size());
+  // Far from the cloud (no ball of the previous radius holds k points there), and a cloud of
+  // fewer points than k.
+  const std::vector<sfe::Vec3> far = {sfe::Vec3(5, 5, 5), sfe::Vec3(0.1, 0.2, 0.3), sfe::Vec3(-7, 0, 0)};
+  CHECK(ranked_mismatches(noisy, in_order, far, 150) == 0);
+  CHECK(ranked_mismatches(noisy, scattered, far, 150) == 0);
+  CHECK(ranked_mismatches(std::vector<sfe::Vec3>(noisy.begin(), noisy.begin() + 40),
+                          std::vector<std::size_t>(in_order.begin(), in_order.begin() + 40), far, 150) == 0);
+  // A lattice: many points at exactly the same distance, told apart by their index.
+  std::vector<sfe::Vec3> lattice;
+  for(int i = 0; i < 40; ++i)
+    for(int j = 0; j < 40; ++j)
+      lattice.emplace_back(0.25 * i, 0.25 * j, 0);
+  std::vector<std::size_t> lattice_order(lattice.size());
+  std::iota(lattice_order.begin(), lattice_order.end(), std::size_t(0));
+  CHECK(ranked_mismatches(lattice, lattice_order, far, 36) == 0);
+  // Every point four times: copies are at distance 0 from each other.
+  std::vector<sfe::Vec3> repeated;
+  for(std::size_t i = 0; i < 1500; ++i)
+    repeated.insert(repeated.end(), 4, noisy[i]);
+  CHECK(ranked_mismatches(repeated, std::vector<std::size_t>(in_order.begin(), in_order.begin() + 1500), far, 60) == 0);
+}
+
+TEST_CASE("moment sums with points removed give the principal axes of the points left", "[neighbors]")
+{
+  // The forward search of stage 2 adds and removes members of a plane through these sums.
+  const std::vector<sfe::Vec3> points = to_vec3(sample(chamfered_box(), 2000, 0.01));
+  sfe::Moment_sums sums(points.front());
+  std::vector<sfe::Vec3> left;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    sums.add(points[i]);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(i % 3 == 0)
+      sums.remove(points[i]);
+    else
+      left.push_back(points[i]);
+  sfe::Principal_axes incremental, direct;
+  REQUIRE(sums.count() == left.size());
+  REQUIRE(sums.principal_axes(incremental));
+  REQUIRE(sfe::compute_principal_axes(left.size(), [&](std::size_t j) -> const sfe::Vec3& { return left[j]; }, direct));
+  CHECK((incremental.centroid - direct.centroid).norm() < 1e-12);
+  CHECK((incremental.variances - direct.variances).norm() < 1e-12);
+  // The normals agree up to orientation.
+  CHECK(std::abs(incremental.axes.col(0).dot(direct.axes.col(0))) > 1 - 1e-9);
+  sfe::Moment_sums empty(points.front());
+  CHECK_FALSE(empty.principal_axes(incremental));
+}
 
 TEST_CASE("gridded neighbourhoods are exactly the k nearest points", "[neighbors]")
 {

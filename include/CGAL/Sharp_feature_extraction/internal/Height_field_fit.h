@@ -24,6 +24,18 @@ struct Local_frame
   Vec3 origin = Vec3::Zero(), u = Vec3::UnitX(), v = Vec3::UnitY(), n = Vec3::UnitZ();
 };
 
+/// The frame of principal axes `axes`: origin at the centroid, n along the smallest variance,
+/// u along the largest.
+inline Local_frame principal_frame(const Principal_axes& axes)
+{
+  Local_frame frame;
+  frame.origin = axes.centroid;
+  frame.n = axes.axes.col(0);
+  frame.u = axes.axes.col(2);
+  frame.v = frame.n.cross(frame.u).normalized();
+  return frame;
+}
+
 /// Principal component frame of `points[indices]`: n along the smallest variance.
 /// `spread` receives the variances (ascending). Returns false for fewer than 3 points.
 template <typename IndexRange>
@@ -34,12 +46,16 @@ bool principal_frame(const std::vector<Vec3>& points, const IndexRange& indices,
   if(indices.size() < 3
      || !compute_principal_axes(indices.size(), [&](std::size_t j) -> const Vec3& { return points[indices[j]]; }, axes))
     return false;
-  frame.origin = axes.centroid;
-  frame.n = axes.axes.col(0);
-  frame.u = axes.axes.col(2);
-  frame.v = frame.n.cross(frame.u).normalized();
+  frame = principal_frame(axes);
   spread = axes.variances;
   return true;
+}
+
+/// The weight of a point at `p` in a moving least-squares fit centred at `center`:
+/// exp(-|p - center|^2 / bandwidth^2), or 1 (no window) when `bandwidth` is 0.
+inline double gaussian_weight(const Vec3& p, const Vec3& center, double bandwidth)
+{
+  return bandwidth > 0 ? std::exp(-(p - center).squaredNorm() * (1. / (bandwidth * bandwidth))) : 1.;
 }
 
 /// A polynomial height field z = f(x, y) of degree 1 or 2 over a local frame: the jet of
@@ -58,6 +74,9 @@ public:
   double height(const Vec3& q) const
   {
     const Vec3 d = q - frame.origin;
+    // The plane of the frame (set_plane()): the same value without evaluating the zero terms.
+    if(m_frame_plane)
+      return d.dot(frame.n);
     return d.dot(frame.n) - value(d.dot(frame.u) / scale, d.dot(frame.v) / scale);
   }
 
@@ -82,6 +101,18 @@ public:
     return (frame.n - fx * frame.u - fy * frame.v).normalized();
   }
 
+  /// The plane of `reference` itself (z = 0). It is the least-squares plane of points whose
+  /// principal frame `reference` is (see `principal_frame()`): in that frame their heights
+  /// have no mean and no covariance with x and y, so `fit()` of degree 1 would give it too,
+  /// up to rounding, at the cost of two passes over the points.
+  void set_plane(const Local_frame& reference)
+  {
+    frame = reference;
+    scale = 1;
+    coefficients.setZero();
+    m_frame_plane = true;
+  }
+
   /// Least-squares fit of degree `degree` (1 or 2) to `points[indices]` over `reference`.
   /// Falls back to degree 1 when there are too few points for a quadric. Returns false
   /// when there are fewer than 3 points.
@@ -89,16 +120,17 @@ public:
   bool fit(const std::vector<Vec3>& points, const IndexRange& indices, const Local_frame& reference,
            int degree)
   {
-    return fit(points, indices, reference, degree, Vec3::Zero(), 0.);
+    return fit(points, indices, reference, degree, [](std::size_t) { return 1.; });
   }
 
-  /// Same, weighted by exp(-|p - center|^2 / bandwidth^2) (moving least squares) when
-  /// `bandwidth` > 0.
-  template <typename IndexRange>
+  /// Same, point `points[i]` weighted by `weight(i)` (moving least squares: see
+  /// `gaussian_weight()`).
+  template <typename IndexRange, typename Weight>
   bool fit(const std::vector<Vec3>& points, const IndexRange& indices, const Local_frame& reference,
-           int degree, const Vec3& center, double bandwidth)
+           int degree, const Weight& weight)
   {
     frame = reference;
+    m_frame_plane = false;
     std::size_t count = 0;
     double extent = 0;
     for(std::size_t i : indices)
@@ -117,13 +149,12 @@ public:
     double moment[15] = {0};     // 1 X Y XX XY YY XXX XXY XYY YYY XXXX XXXY XXYY XYYY YYYY
     double weighted_z[6] = {0}; // z, X z, Y z, XX z, XY z, YY z
     const double inverse_scale = 1. / scale;
-    const double inverse_square_bandwidth = bandwidth > 0 ? 1. / (bandwidth * bandwidth) : 0.;
     for(std::size_t i : indices)
     {
       const Vec3 d = points[i] - frame.origin;
       const double X = d.dot(frame.u) * inverse_scale, Y = d.dot(frame.v) * inverse_scale;
       const double z = d.dot(frame.n);
-      const double w = bandwidth > 0 ? std::exp(-(points[i] - center).squaredNorm() * inverse_square_bandwidth) : 1.;
+      const double w = weight(i);
       const double wX = w * X, wY = w * Y;
       moment[0] += w; moment[1] += wX; moment[2] += wY;
       moment[3] += wX * X; moment[4] += wX * Y; moment[5] += wY * Y;
@@ -175,6 +206,9 @@ public:
   static constexpr std::size_t minimum_points_for_quadric = 10;
 
 private:
+  /// Whether the graph is the plane of the frame (set by `set_plane()`).
+  bool m_frame_plane = false;
+
   /// Cholesky factorization of the (symmetric, positive semi-definite) normal matrix; the
   /// pivoting LDLT factorization when it is not numerically positive definite.
   template <typename Matrix, typename Vector>

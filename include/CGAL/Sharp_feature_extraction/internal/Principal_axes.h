@@ -38,32 +38,69 @@ struct Principal_axes
   }
 };
 
+/// Running sums of the first and second moments of a point set about a fixed reference
+/// point, to which points are added and from which they are removed one at a time: the
+/// principal axes of a set that changes by a few points at a time, without a pass over it.
+/// The reference should lie close to the points, so that the covariance suffers no
+/// cancellation.
+class Moment_sums
+{
+public:
+  explicit Moment_sums(const Vec3& reference) : m_reference(reference) {}
+
+  void add(const Vec3& p)
+  {
+    const Vec3 d = p - m_reference;
+    ++m_count;
+    m_sum += d;
+    m_second_moment.noalias() += d * d.transpose();
+  }
+
+  void remove(const Vec3& p)
+  {
+    const Vec3 d = p - m_reference;
+    --m_count;
+    m_sum -= d;
+    m_second_moment.noalias() -= d * d.transpose();
+  }
+
+  std::size_t count() const { return m_count; }
+
+  /// The principal axes of the points added and not removed; false for an empty set.
+  bool principal_axes(Principal_axes& out) const
+  {
+    if(m_count == 0)
+      return false;
+    const Vec3 mean = m_sum / double(m_count);
+    const Eigen::Matrix3d covariance = m_second_moment / double(m_count) - mean * mean.transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    solver.computeDirect(covariance);
+    out.centroid = m_reference + mean;
+    for(int i = 0; i < 3; ++i)
+      out.axes.col(i) = solver.eigenvectors().col(i).normalized();
+    out.variances = solver.eigenvalues().cwiseMax(0.);
+    return true;
+  }
+
+private:
+  Vec3 m_reference;
+  std::size_t m_count = 0;
+  Vec3 m_sum = Vec3::Zero();
+  Eigen::Matrix3d m_second_moment = Eigen::Matrix3d::Zero();
+};
+
 /// The principal axes of `count` points, `point(j)` for `j` in [0, count). One pass: the
 /// moments are taken about the first point, which lies close to all the others in a
-/// neighbourhood, so that the covariance suffers no cancellation. Returns false for an empty set.
+/// neighbourhood. Returns false for an empty set.
 template <typename PointAt>
 bool compute_principal_axes(std::size_t count, const PointAt& point, Principal_axes& out)
 {
   if(count == 0)
     return false;
-  const Vec3 first = point(0);
-  Vec3 sum = Vec3::Zero();
-  Eigen::Matrix3d second_moment = Eigen::Matrix3d::Zero();
+  Moment_sums sums(point(0));
   for(std::size_t j = 0; j < count; ++j)
-  {
-    const Vec3 d = point(j) - first;
-    sum += d;
-    second_moment.noalias() += d * d.transpose();
-  }
-  const Vec3 mean = sum / double(count);
-  const Eigen::Matrix3d covariance = second_moment / double(count) - mean * mean.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.computeDirect(covariance);
-  out.centroid = first + mean;
-  for(int i = 0; i < 3; ++i)
-    out.axes.col(i) = solver.eigenvectors().col(i).normalized();
-  out.variances = solver.eigenvalues().cwiseMax(0.);
-  return true;
+    sums.add(point(j));
+  return sums.principal_axes(out);
 }
 
 /// The least-squares line through `count` points: their centroid and unit direction; returns
