@@ -54,10 +54,7 @@ inline bool nearest_among(const std::vector<Vec3>& points, const Vec3& p, const 
       // Nearest first: the fits then sum the neighbours in an order that depends on the points
       // only, so that a tile of the cloud (see `extract_tile_features()`) gets the same residuals
       // to the last bit as the whole cloud, not an order that depends on the numbering.
-      // (A selection then a sort of the k nearest: the pairs are distinct, so this is the
-      // order of a full sort, at a fraction of the cost of a heap over every ranked point.)
-      std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
-      std::sort(ranked.begin(), ranked.begin() + k);
+      sort_smallest(ranked, k);
       previous = ranked[k - 1].first;
       neighbors.clear();
       for(std::size_t r = 0; r < k; ++r)

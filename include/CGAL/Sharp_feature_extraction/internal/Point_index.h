@@ -24,6 +24,16 @@ namespace CGAL {
 namespace Sharp_feature_extraction {
 namespace internal {
 
+/// Puts the `k` smallest elements of `ranked` (at least `k`, all distinct, such as (distance,
+/// index) pairs) at its front, in ascending order: the order of a full sort there, at a
+/// fraction of the cost of a sort or of a heap over all of them.
+template <typename T>
+void sort_smallest(std::vector<T>& ranked, std::size_t k)
+{
+  std::nth_element(ranked.begin(), ranked.begin() + (k - 1), ranked.end());
+  std::sort(ranked.begin(), ranked.begin() + k);
+}
+
 /// k-nearest-neighbour and ball queries over a fixed set of points, answered with indices.
 /// Built once and shared by the stages that search the same set; const queries are thread-safe.
 class Point_index
@@ -137,8 +147,9 @@ private:
   static constexpr double ball_rounding_margin = 1e-9;
 
   // The k smallest (squared distance, index) pairs of the points within `radius` of `q`, in
-  // `out` (replacing its content), and true, if that ball holds at least k points and its k-th point lies inside it by
-  // more than rounding (so that no point outside it can be nearer); false otherwise.
+  // `out` (replacing its content), and true, if that ball holds at least k points and its
+  // k-th point lies inside it by more than rounding (so that no point outside it can be
+  // nearer); false otherwise.
   bool rank_ball(const Vec3& q, std::size_t k, double radius, Ranked_query& query, std::vector<std::size_t>& out) const
   {
     query.found.clear();
@@ -152,8 +163,7 @@ private:
       const double dx = p.x() - q.x(), dy = p.y() - q.y(), dz = p.z() - q.z();
       query.ranked.emplace_back(dx * dx + dy * dy + dz * dz, i);
     }
-    std::nth_element(query.ranked.begin(), query.ranked.begin() + (k - 1), query.ranked.end());
-    std::sort(query.ranked.begin(), query.ranked.begin() + k);
+    sort_smallest(query.ranked, k);
     const double kth = query.ranked[k - 1].first;
     if(!(kth <= radius * radius * (1 - ball_rounding_margin)))
       return false;

@@ -380,10 +380,7 @@ private:
         (std::max<std::size_t>)(1, std::size_t(Constants::batch_fraction * double(members.size()))));
       if(batch > 0)
       {
-        // The `batch` best in ascending order (pairs are distinct, so the order is total):
-        // a selection then a sort of the batch, cheaper than a heap over every ranked point.
-        std::nth_element(m_ranked.begin(), m_ranked.begin() + (batch - 1), m_ranked.end());
-        std::sort(m_ranked.begin(), m_ranked.begin() + batch);
+        sort_smallest(m_ranked, batch);
         for(std::size_t j = 0; j < batch; ++j)
         {
           members.push_back(m_ranked[j].second);
