@@ -217,12 +217,12 @@ TEST_CASE("a unit cube yields its 12 creases and 8 corners at 0.5% and at 1% noi
   check(unit_cube(), very_noisy, Expected{12, 12, 0, 0, 8, 8, 12, 0, 0.009, 0.0033, 0.97, 0.008, 30});
 }
 
-TEST_CASE("a chamfered box yields 14 polylines (12 of its 15 creases as one curve) at 0.5% noise, 9 at 1%",
+TEST_CASE("a chamfered box yields 13 polylines (13 of its 15 creases as one curve) at 0.5% noise, 9 at 1%",
           "[shapes][chamfer][noise]")
 {
-  // Corners of the chamfer are missed: the nearest found corner is 37% (0.5%) and 42% (1%)
+  // Corners of the chamfer are missed: the nearest found corner is 41% (0.5%) and 42% (1%)
   // dB away. At 1% noise the chamfer's six short creases are lost.
-  check(chamfered_box(), noisy, Expected{14, 14, 0, 0, 9, 9, 12, 2, 0.021, 0.0018, 0.9, 0.45, 90});
+  check(chamfered_box(), noisy, Expected{13, 13, 0, 0, 8, 8, 13, 2, 0.021, 0.0018, 0.9, 0.45, 90});
   check(chamfered_box(), very_noisy, Expected{9, 9, 0, 0, 6, 6, 9, 0, 0.009, 0.003, 0.85, 0.45, 90});
 }
 
@@ -250,8 +250,10 @@ TEST_CASE("two planes with 0.5% noise: one polyline at 90 degrees, a short piece
 TEST_CASE("a sphere cut by a plane, with 0.5% noise: the 50-degree rim is one loop, the shallower ones partly found",
           "[shapes][shallow][noise]")
 {
+  // At 35 and 40 degrees the rim comes in two pieces that meet at a spurious corner (at 40
+  // degrees it was one open piece before stage 2 split its tilted planes).
   check(truncated_sphere(30), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.006, 0.004, 0, 0, 15});
-  check(truncated_sphere(35), noisy, Expected{3, 3, 0, 0, 2, 2, 0, 3, 0.023, 0.005, 0.5, 0, 28});
-  check(truncated_sphere(40), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.012, 0.003, 0.8, 0, 33});
+  check(truncated_sphere(35), noisy, Expected{2, 2, 0, 0, 1, 1, 0, 2, 0.023, 0.005, 0.55, 0, 28});
+  check(truncated_sphere(40), noisy, Expected{2, 2, 0, 0, 1, 1, 0, 2, 0.012, 0.003, 0.8, 0, 33});
   check(truncated_sphere(50), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.007, 0.002, 0.97, 0, 27});
 }

@@ -275,6 +275,63 @@ TEST_CASE("surfaces found around one candidate serve a neighbour only where they
   CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.99, 0, 0), tolerance));
 }
 
+namespace {
+
+/// The members of `surface` are every point of `search.local`, with their least-squares plane.
+void take_all_points(const sfe::Forward_search& search, sfe::Rmls_surface& surface)
+{
+  surface.members.resize(search.local.size());
+  std::iota(surface.members.begin(), surface.members.end(), std::size_t(0));
+  sfe::Local_frame frame;
+  sfe::Vec3 spread;
+  REQUIRE(sfe::principal_frame(search.local, surface.members, frame, spread));
+  REQUIRE(surface.height_field.fit(search.local, surface.members, frame, 1));
+}
+
+} // namespace
+
+TEST_CASE("a noisy plane tilted across a crease splits into the crease's sides, one over a cylinder does not",
+          "[projection]")
+{
+  // 400 points of a unit square [-1, 1] x [-1, 1] folded along y (each half turned by 35
+  // degrees: a 70-degree crease), then of a cylinder of radius 2 over the same square, with
+  // noise uniform in a ball of radius 0.05 (2.5% of the half-width).
+  const double noise = 0.05, half_turn = 35 * pi / 180, cylinder_radius = 2;
+  const std::size_t min_size = 40;
+  Random random(7);
+  sfe::Forward_search fold, cylinder;
+  for(int i = 0; i < 400; ++i)
+  {
+    const double x = random.uniform(-1, 1), y = random.uniform(-1, 1);
+    const Vec e = random.in_ball(noise), f = random.in_ball(noise);
+    fold.local.emplace_back(x * std::cos(half_turn) + e.x, y + e.y, std::abs(x) * std::sin(half_turn) + e.z);
+    const double angle = x / cylinder_radius;
+    cylinder.local.emplace_back(cylinder_radius * std::sin(angle) + f.x, y + f.y,
+                                cylinder_radius * (1 - std::cos(angle)) + f.z);
+  }
+  sfe::Rmls_surface tilted, a, b;
+  take_all_points(fold, tilted);
+  REQUIRE(fold.split_across_crease(tilted, min_size, a, b));
+  // Each side holds the points of one half, but for those the noise puts across the fold.
+  std::size_t misplaced = 0;
+  for(const sfe::Rmls_surface* side : {&a, &b})
+  {
+    std::size_t negative = 0;
+    for(std::size_t i : side->members)
+      negative += fold.local[i].x() < 0 ? 1 : 0;
+    misplaced += (std::min)(negative, side->members.size() - negative);
+  }
+  CHECK(a.members.size() + b.members.size() == fold.local.size());
+  CHECK(misplaced <= fold.local.size() / 20);
+  // The sides' planes are the halves' planes, 70 degrees apart.
+  const double cosine = std::abs(a.height_field.normal(fold.local[0]).dot(b.height_field.normal(fold.local[0])));
+  CHECK(std::acos(cosine) * 180 / pi == Approx(70).margin(3));
+
+  sfe::Rmls_surface round;
+  take_all_points(cylinder, round);
+  CHECK_FALSE(cylinder.split_across_crease(round, min_size, a, b));
+}
+
 TEST_CASE("an index over no points answers every query with nothing", "[neighbors]")
 {
   // CGAL's Kd_tree has the precondition of a non-empty set (checked in builds without NDEBUG);

@@ -412,6 +412,56 @@ TEST_CASE("stage 2: on a cube with 0.5% noise, half the edge points lie within 0
   CHECK(near_corner >= 7);
 }
 
+/// Stage 2, noise 1% dB: share of the candidates on a crease (within `on_crease` of it, away
+/// from its ends) that give an edge point within `edge_tolerance_on_crease` of a crease, for two
+/// planes bent by 60 and 70 degrees and for the cube (90). Measured at 30,000 points: 28%, 66%
+/// and 98% (without the split of stage 2's tilted planes: 15%, 53% and 97%).
+constexpr double heavy_noise = 0.01;
+constexpr double on_crease = 0.005;                   // relative to dB: the scoring eps
+constexpr std::array<double, 3> minimum_edge_share_on_crease = {{0.2, 0.6, 0.9}};
+constexpr double edge_tolerance_on_crease = 0.01;     // relative to dB: the noise radius
+/// Candidates this close to the end of their crease (corners, border) do not count.
+constexpr double crease_end_margin = 0.1;             // relative to dB
+
+TEST_CASE("stage 2: under 1% noise, candidates on a crease give edge points, also on shallow creases",
+          "[stages][projection][noise]")
+{
+  // Under 1% noise the first plane that the forward search grows around a candidate on a
+  // shallow crease often takes both sides, tilted halfway between the faces; the search then
+  // splits it along the crease (Forward_search::split_across_crease()) where the crease stands
+  // out of the noise. At 40 and 50 degrees it does not yet (2 and 11 of about 88 candidates).
+  const std::array<Shape, 3> shapes = {{two_planes(60), two_planes(70), unit_cube()}};
+  for(std::size_t k = 0; k < shapes.size(); ++k)
+  {
+    const Shape& shape = shapes[k];
+    INFO(shape.name);
+    const Stages s = run_stages(shape, heavy_noise);
+    std::vector<bool> has_edge(s.points.size(), false);
+    std::vector<double> edge_distance(s.points.size(), 0);
+    for(const auto& e : s.projected.edge_points)
+    {
+      has_edge[e.source] = true;
+      edge_distance[e.source] = nearest_crease(s.shape, to_vec(e.point)).second;
+    }
+    std::size_t on = 0, edge_near = 0;
+    for(std::size_t c : s.candidates.indices)
+    {
+      const Vec p = to_vec(s.points[c]);
+      const std::pair<std::size_t, double> nearest = nearest_crease(s.shape, p);
+      const Crease& crease = s.shape.creases[nearest.first];
+      if(nearest.second > on_crease * s.diagonal
+         || (std::min)(distance(p, crease.a), distance(p, crease.b)) < crease_end_margin * s.diagonal)
+        continue;
+      ++on;
+      edge_near += has_edge[c] && edge_distance[c] <= edge_tolerance_on_crease * s.diagonal ? 1 : 0;
+    }
+    std::cout << shape.name << " at 1% noise, stage 2: " << edge_near << " of the " << on
+              << " candidates on a crease give an edge point within 1% dB of a crease" << std::endl;
+    REQUIRE(on >= 50);
+    CHECK(double(edge_near) >= minimum_edge_share_on_crease[k] * double(on));
+  }
+}
+
 TEST_CASE("stage 3: smoothing never moves corner points and keeps edge points on the creases", "[stages][smoothing]")
 {
   for(double noise : {0., noisy})
