@@ -340,6 +340,18 @@ inline Shape two_planes(double bend_degrees)
   return s;
 }
 
+/// A 1 x 0.3 x 1 block with a lip along one edge (an L-shaped prism): the lip rises 0.3 above
+/// the block, `lip_base` thick at its foot and `lip_top` thick at its top, its outer face flush
+/// with the block's side. Its top is the end of a thin wall: two creases `lip_top` apart at
+/// z = 0.6 along y, between faces parallel (`lip_base` = `lip_top`) or in a narrow wedge.
+/// 18 creases, 12 corners of valence 3.
+inline Shape lipped_box(double lip_top, double lip_base)
+{
+  // Fan from the reflex vertex at the lip's foot, from which the profile is star-shaped.
+  return make_prism("block with a lip " + std::to_string(lip_top) + " to " + std::to_string(lip_base) + " thick",
+                    {{{0, 0}, {1, 0}, {1, 0.6}, {1 - lip_top, 0.6}, {1 - lip_base, 0.3}, {0, 0.3}}}, 1, 4);
+}
+
 /// The unit square z = 0: no crease (its border is not a crease).
 inline Shape square_plane()
 {

@@ -15,6 +15,7 @@
 #include <CGAL/Sharp_feature_extraction/internal/Point_index.h>
 #include <CGAL/Sharp_feature_extraction/internal/Progress.h>
 #include <CGAL/Sharp_feature_extraction/internal/Stage_parameters.h>
+#include <CGAL/Sharp_feature_extraction/internal/Wall_end.h>
 
 #include <Eigen/Dense>
 
@@ -96,6 +97,26 @@ inline bool closest_on_plane_intersection(const Vec3& q, const Vec3& a, const Ve
   const double la = (ra - c * rb) / det, lb = (rb - c * ra) / det;
   out = q + la * na + lb * nb;
   return out.allFinite();
+}
+
+/// The line where the planes `a` and `b` meet, at its point nearest `center`, and in each plane
+/// the direction from that line towards the plane's centroid (not normalized). Returns false if
+/// the planes are nearly parallel.
+inline bool directions_from_crease_line(const Rmls_surface& a, const Rmls_surface& b, const Vec3& center,
+                                        Vec3& line_point, std::array<Vec3, 2>& towards)
+{
+  const Vec3 na = a.height_field.normal(center), nb = b.height_field.normal(center);
+  if(!closest_on_plane_intersection(center, a.height_field.foot(center), na, b.height_field.foot(center), nb, line_point))
+    return false;
+  const Vec3 t = na.cross(nb).normalized();
+  const Rmls_surface* s[2] = {&a, &b};
+  const Vec3 n[2] = {na, nb};
+  for(int k = 0; k < 2; ++k)
+  {
+    const Vec3 d = s[k]->centroid - line_point;
+    towards[k] = d - d.dot(t) * t - d.dot(n[k]) * n[k];
+  }
+  return true;
 }
 
 /// The per-thread workspace and algorithm of the forward search.
@@ -281,19 +302,13 @@ private:
   // `center`; false if the planes are nearly parallel or a centroid lies on the line.
   bool set_halves(const Rmls_surface& a, const Rmls_surface& b, const Vec3& center)
   {
-    const Vec3 na = a.height_field.normal(center), nb = b.height_field.normal(center);
-    if(!closest_on_plane_intersection(center, a.height_field.foot(center), na, b.height_field.foot(center), nb, m_line_point))
+    if(!directions_from_crease_line(a, b, center, m_line_point, m_half_direction))
       return false;
-    const Vec3 t = na.cross(nb).normalized();
-    const Rmls_surface* s[2] = {&a, &b};
-    const Vec3 n[2] = {na, nb};
-    for(int k = 0; k < 2; ++k)
+    for(Vec3& u : m_half_direction)
     {
-      const Vec3 d = s[k]->centroid - m_line_point;
-      const Vec3 u = d - d.dot(t) * t - d.dot(n[k]) * n[k];
       if(!(u.norm() > 0))
         return false;
-      m_half_direction[k] = u.normalized();
+      u.normalize();
     }
     return true;
   }
@@ -709,6 +724,54 @@ inline bool project_corner_point(const Rmls_surface* const triple[3], const Vec3
   return true;
 }
 
+/// Two planes in a wedge narrower than this (degrees) are the two sides of a wall, its end
+/// cut off or not: both their members lie on the same side of the line where they meet. Under
+/// noise, the sides of a thin rim between faces 22 degrees apart (spool) come out 25 to 35
+/// degrees apart, and their planes meet beyond the rim (1.5% dB on spool).
+constexpr double thin_wall_wedge_angle = 45;
+
+/// Whether the members of the planes `a` and `b` lie on the same side of the line where they
+/// meet (nearest `p`), in a wedge narrower than `thin_wall_wedge_angle`.
+inline bool narrow_wedge(const Rmls_surface& a, const Rmls_surface& b, const Vec3& p)
+{
+  Vec3 line;
+  std::array<Vec3, 2> towards;
+  return directions_from_crease_line(a, b, p, line, towards)
+    && towards[0].dot(towards[1]) > std::cos(radians(thin_wall_wedge_angle)) * towards[0].norm() * towards[1].norm();
+}
+
+/// The edge point of candidate `p` where the thin wall whose sides are the planes `a` and `b`
+/// ends (see `Wall_end.h`), on the side nearer `p`, if the two sides stand apart by more than
+/// the noise, both end near `p` on the same side and the point passes the offset check. Its
+/// normals: the side's, away from the other side, and the closing face's, outward.
+inline bool project_on_wall_end(const Forward_search& search, const Rmls_surface& a, const Rmls_surface& b,
+                                const Vec3& p, std::size_t source, const Surface_checks& checks, double tolerance,
+                                Working_edge_point& edge)
+{
+  const double thickness = (std::min)(a.height_field.residual(b.centroid), b.height_field.residual(a.centroid));
+  if(!(thickness > Wall_end_constants::min_thickness * tolerance))
+    return false;
+  // Both sides end the same way: the outward direction from both their centroids.
+  const Vec3 mean_a = in_plane_mean(search.local, a.members, a.height_field, p);
+  const Vec3 mean_b = in_plane_mean(search.local, b.members, b.height_field, p);
+  if(!(mean_a.dot(mean_b) > 0))
+    return false;
+  const Vec3 outward = -(mean_a + mean_b);
+  Wall_end_estimate estimate(search.local, p, search.radius(), tolerance);
+  Wall_end ends[2];
+  if(!estimate(a.members, a.height_field, b.centroid, outward, ends[0])
+     || !estimate(b.members, b.height_field, a.centroid, outward, ends[1]))
+    return false;
+  const int near = a.height_field.residual(p) <= b.height_field.residual(p) ? 0 : 1;
+  const Wall_end& end = ends[near];
+  if(!checks.near_candidate(end.point, p))
+    return false;
+  edge.point = end.point;
+  edge.source = source;
+  edge.normals = {{orient_away(end.normal, end.point, (near == 0 ? b : a).centroid), end.outward}};
+  return true;
+}
+
 /// The projection of `p` onto the intersections of `surfaces` (at least two, found by
 /// `find_surfaces()` around a candidate at most a few spacings from `p`, whose neighbourhood
 /// is in `search.local`): an edge point on the two surfaces closest to `p`, and a corner point
@@ -724,6 +787,12 @@ inline Projection project_on_surfaces(const Forward_search& search, std::vector<
   });
   Projection result;
   const Rmls_surface* pair[2] = {distinct[0], distinct[1]};
+  // Under noise, a narrow wedge is a wall whose closing face the search did not resolve.
+  if(noise_dominates(scales) && narrow_wedge(*pair[0], *pair[1], p))
+  {
+    result.has_edge = project_on_wall_end(search, *pair[0], *pair[1], p, source, checks, scales.rmls_tolerance, result.edge);
+    return result;
+  }
   result.has_edge = project_edge_point(pair, p, source, checks, result.edge);
   if(result.has_edge && distinct.size() >= 3)
   {
@@ -899,7 +968,10 @@ public:
     {
       const std::vector<const Rmls_surface*> surfaces = surfaces_around(m_cells.member(cell, rank));
       if(surfaces.empty())
+      {
+        project_on_parallel_sides(cell, rank);
         continue;
+      }
       m_own_search.clear();
       for(std::size_t other = rank; other < size; ++other)
       {
@@ -939,6 +1011,23 @@ private:
     for(std::size_t j : m_neighbors)
       m_search.local.push_back(m_input.points[j]);
     return find_surfaces(m_search, p, m_scales, m_parameters);
+  }
+
+  // Under noise, the first two planes that the search around the candidate found, if parallel,
+  // may be the two sides of a thin wall whose end is near it (see `project_on_wall_end()`).
+  void project_on_parallel_sides(std::size_t cell, std::size_t rank)
+  {
+    const std::vector<Rmls_surface>& found = m_search.surfaces;
+    const std::size_t q = m_cells.member(cell, rank);
+    const Vec3& p = m_input.points[q];
+    if(!noise_dominates(m_scales) || found.size() < 2
+       || std::abs(found[0].height_field.normal(p).dot(found[1].height_field.normal(p)))
+            <= std::cos(radians(m_parameters.sharpness_angle)))
+      return;
+    Projection& projection = m_projections[m_cells.start[cell] + rank];
+    projection.has_edge = project_on_wall_end(m_search, found[0], found[1], p, m_input.input_index[q],
+                                              Surface_checks(m_search, m_scales, m_parameters),
+                                              m_scales.rmls_tolerance, projection.edge);
   }
 
   void project(std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces)
