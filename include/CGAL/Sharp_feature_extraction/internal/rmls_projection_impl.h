@@ -572,6 +572,23 @@ inline double distance_to_members(const Forward_search& search, const Rmls_surfa
   return std::sqrt(best);
 }
 
+/// How far apart the planes `a` and `b` stand: the distance from the centroid of either to the
+/// plane of the other, the smaller.
+inline double separation(const Rmls_surface& a, const Rmls_surface& b)
+{
+  return (std::min)(a.height_field.residual(b.centroid), b.height_field.residual(a.centroid));
+}
+
+/// Whether the planes `a` and `b` are the two sides of a wall: parallel (their normals at `p`
+/// within the angle whose cosine is `cos_parallel`) and farther apart than the noise
+/// (`Wall_end_constants::min_side_separation` tolerances).
+inline bool wall_sides(const Rmls_surface& a, const Rmls_surface& b, const Vec3& p, double tolerance,
+                       double cos_parallel)
+{
+  return std::abs(a.height_field.normal(p).dot(b.height_field.normal(p))) >= cos_parallel
+    && separation(a, b) > Wall_end_constants::min_side_separation * tolerance;
+}
+
 /// Degree of the final surface fits: the user's jet degree, but planes when the noise dominates
 /// the sampling (a quadric then fits the noise and bends across the crease).
 inline int surface_degree(const Scales& scales, const Projection_parameters& parameters)
@@ -589,16 +606,23 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
   const int degree = surface_degree(scales, parameters);
   search.run(scales.rmls_tolerance, degree);
   const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
+  const double cos_sides = std::cos(radians(Wall_end_constants::max_side_angle));
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
+  // Under noise, parallel planes well apart are the two sides of a thin wall instead (see
+  // `wall_sides()`): keep the side that `p` lies on, the nearer.
   std::vector<Rmls_surface*> distinct;
   for(Rmls_surface& s : search.surfaces)
   {
     const Vec3 n = s.height_field.normal(p);
-    bool parallel = false;
-    for(const Rmls_surface* d : distinct)
-      parallel = parallel || std::abs(d->height_field.normal(p).dot(n)) > cos_sharp;
-    if(!parallel)
+    Rmls_surface** parallel = nullptr;
+    for(Rmls_surface*& d : distinct)
+      if(parallel == nullptr && std::abs(d->height_field.normal(p).dot(n)) > cos_sharp)
+        parallel = &d;
+    if(parallel == nullptr)
       distinct.push_back(&s);
+    else if(degree == 1 && wall_sides(**parallel, s, p, scales.rmls_tolerance, cos_sides)
+            && s.height_field.residual(p) < (*parallel)->height_field.residual(p))
+      *parallel = &s;
   }
   // Fewer than two distinct planes under noise: the first may span a crease.
   if(degree == 1 && distinct.size() < 2 && !search.surfaces.empty())
@@ -748,8 +772,7 @@ inline bool project_on_wall_end(const Forward_search& search, const Rmls_surface
                                 const Vec3& p, std::size_t source, const Surface_checks& checks, double tolerance,
                                 Working_edge_point& edge)
 {
-  const double thickness = (std::min)(a.height_field.residual(b.centroid), b.height_field.residual(a.centroid));
-  if(!(thickness > Wall_end_constants::min_thickness * tolerance))
+  if(!(separation(a, b) > Wall_end_constants::min_thickness * tolerance))
     return false;
   // Both sides end the same way: the outward direction from both their centroids.
   const Vec3 mean_a = in_plane_mean(search.local, a.members, a.height_field, p);
