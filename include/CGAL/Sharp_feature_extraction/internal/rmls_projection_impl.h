@@ -580,12 +580,12 @@ inline double separation(const Rmls_surface& a, const Rmls_surface& b)
 }
 
 /// Whether the planes `a` and `b` are the two sides of a wall: parallel (their normals at `p`
-/// within the angle whose cosine is `cos_parallel`) and farther apart than the noise
+/// within `Wall_end_constants::max_side_angle`) and farther apart than the noise
 /// (`Wall_end_constants::min_side_separation` tolerances).
-inline bool wall_sides(const Rmls_surface& a, const Rmls_surface& b, const Vec3& p, double tolerance,
-                       double cos_parallel)
+inline bool wall_sides(const Rmls_surface& a, const Rmls_surface& b, const Vec3& p, double tolerance)
 {
-  return std::abs(a.height_field.normal(p).dot(b.height_field.normal(p))) >= cos_parallel
+  return std::abs(a.height_field.normal(p).dot(b.height_field.normal(p)))
+           >= std::cos(radians(Wall_end_constants::max_side_angle))
     && separation(a, b) > Wall_end_constants::min_side_separation * tolerance;
 }
 
@@ -606,7 +606,6 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
   const int degree = surface_degree(scales, parameters);
   search.run(scales.rmls_tolerance, degree);
   const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
-  const double cos_sides = std::cos(radians(Wall_end_constants::max_side_angle));
   // Nearly parallel surfaces are one surface split by noise: keep the larger (found first).
   // Under noise, parallel planes well apart are the two sides of a thin wall instead (see
   // `wall_sides()`): keep the side that `p` lies on, the nearer.
@@ -614,13 +613,12 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
   for(Rmls_surface& s : search.surfaces)
   {
     const Vec3 n = s.height_field.normal(p);
-    Rmls_surface** parallel = nullptr;
-    for(Rmls_surface*& d : distinct)
-      if(parallel == nullptr && std::abs(d->height_field.normal(p).dot(n)) > cos_sharp)
-        parallel = &d;
-    if(parallel == nullptr)
+    const auto parallel = std::find_if(distinct.begin(), distinct.end(), [&](const Rmls_surface* d) {
+      return std::abs(d->height_field.normal(p).dot(n)) > cos_sharp;
+    });
+    if(parallel == distinct.end())
       distinct.push_back(&s);
-    else if(degree == 1 && wall_sides(**parallel, s, p, scales.rmls_tolerance, cos_sides)
+    else if(degree == 1 && wall_sides(**parallel, s, p, scales.rmls_tolerance)
             && s.height_field.residual(p) < (*parallel)->height_field.residual(p))
       *parallel = &s;
   }
