@@ -229,7 +229,9 @@ TEST_CASE("a chamfered box yields 13 polylines (13 of its 15 creases as one curv
 TEST_CASE("a stepped box yields its 18 creases and 12 corners at 0.5% and at 1% noise", "[shapes][step][noise]")
 {
   check(stepped_box(), noisy, Expected{18, 18, 0, 0, 12, 12, 18, 0, 0.007, 0.0017, 0.95, 0.005, 35});
-  check(stepped_box(), very_noisy, Expected{18, 18, 0, 0, 12, 12, 18, 0, 0.03, 0.0035, 0.95, 0.015, 30});
+  // At 1% the vertical crease above the concave corner runs past it (the line of its two faces
+  // goes on below): completion cuts it back to the corner (the overshoot was 2.56% dB).
+  check(stepped_box(), very_noisy, Expected{18, 18, 0, 0, 12, 12, 18, 0, 0.013, 0.0035, 0.95, 0.015, 30});
 }
 
 TEST_CASE("a capped cylinder yields its 2 rims as loops at 0.5% and at 1% noise", "[shapes][cylinder][noise]")

@@ -988,6 +988,37 @@ TEST_CASE("stage 5: three curve ends converging on a missed cube corner are join
   check_joined_at_origin(net, 3);
 }
 
+TEST_CASE("stage 5: a curve end that ran past a corner, within a growth radius of it, is cut back to it",
+          "[stages][completion]")
+{
+  // Past a concave corner the line where two of its faces meet goes on, and under noise so do
+  // the edge points: the curve down the z axis drifts off it and ends below the corner, which
+  // lies behind its end, outside its search cone.
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const Vec x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), x, curve_step), -y, -z));
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), y, curve_step), -x, -z));
+  for(Polyline& p : net.polylines)
+    p.front_corner = 0;
+  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1}});
+  std::vector<Vec> down = straight(z, z * curve_step, curve_step);
+  // Its second-to-last vertex is not past the corner, but reaching the corner from it would be
+  // a turn of 76 degrees, which the Mesh_3 step would make a one-segment curve.
+  down.push_back(Vec(0.2 * curve_step, 0, 0.1 * curve_step));
+  down.push_back(Vec(0.6 * curve_step, 0, -0.9 * curve_step));
+  REQUIRE(norm(down.back()) < net.scales.growth_radius);
+  net.polylines.push_back(make_polyline(down, -x, -y));
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  REQUIRE(net.polylines.size() == 3);
+  REQUIRE(net.corners.size() == 1);
+  CHECK(net.corners[0].incident_polylines.size() == 3);
+  for(const Polyline& p : net.polylines)
+    CHECK(std::min(max_distance_to_segment(p, Vec(0, 0, 0), x),
+                   std::min(max_distance_to_segment(p, Vec(0, 0, 0), y), max_distance_to_segment(p, Vec(0, 0, 0), z)))
+          <= completion_corner_tolerance);
+}
+
 TEST_CASE("stage 5: a curve ending at a sharp turn is split there so that Mesh_3 keeps the turn", "[stages][completion]")
 {
   CGAL::Feature_curve_network<K> net = synthetic_network();

@@ -63,7 +63,7 @@ struct Completion_constants
   /// of arc length away from the corner: the nearest vertices are biased (their stage-2
   /// neighbourhoods hold the third surface, and the smoothing stops at the corner), and farther
   /// ones follow the bend of a curved crease.
-  static constexpr double corner_fit_skip = 1;
+  static constexpr double corner_fit_skip = 0.5;
   static constexpr double corner_fit_window = 3;
 };
 
@@ -112,6 +112,17 @@ inline void reverse_curve(Working_polyline& c)
   std::reverse(c.points.begin(), c.points.end());
   std::reverse(c.normals.begin(), c.normals.end());
   std::swap(c.front_corner, c.back_corner);
+}
+
+/// Removes the vertices before the back end of `c` from which the curve turns sharply to reach
+/// its next vertex, last first (the end itself stays).
+inline void drop_sharp_turns_before_back(Working_polyline& c)
+{
+  while(c.points.size() > 2 && turns_sharply(c, c.points.size() - 2))
+  {
+    c.points.erase(c.points.end() - 2);
+    c.normals.erase(c.normals.end() - 2);
+  }
 }
 
 /// `a` followed by `b` (which must start where the joining segment ends).
@@ -208,10 +219,14 @@ private:
       d = v.norm();
       return d > 0 && d <= reach && v.dot(tangent) >= m_cos_aperture * d;
     };
+    // A corner within a growth radius is reached whatever the direction: the end stopped beside
+    // it or overshot it (past a concave corner the crease line of two of its faces goes on, and
+    // so do the edge points of the noise there), and its tangent no longer points at it.
     for(std::size_t k = 0; k < m_net.corners.size(); ++k)
     {
       double d;
-      if(in_cone(m_net.corners[k].point, d) && d < best.distance)
+      const bool ahead = in_cone(m_net.corners[k].point, d);
+      if((ahead || d <= m_scales.growth_radius) && d < best.distance)
         best = Target{no_index, no_index, k, d};
     }
     for(std::size_t d_index = 0; d_index < m_net.polylines.size(); ++d_index)
@@ -273,6 +288,7 @@ private:
     curve.points.push_back(point);
     curve.normals.push_back(curve.normals.back());
     curve.back_corner = corner;
+    drop_sharp_turns_before_back(curve);
     if(!back)
       reverse_curve(curve);
   }
@@ -704,14 +720,14 @@ private:
   // that Mesh_3 would round off (and that the Mesh_3 step would split into a one-segment curve).
   void drop_sharp_end_vertices(Working_polyline& c) const
   {
-    auto erase_vertex = [&](std::size_t v) {
-      c.points.erase(c.points.begin() + std::ptrdiff_t(v));
-      c.normals.erase(c.normals.begin() + std::ptrdiff_t(v));
-    };
-    while(c.front_corner != no_index && c.points.size() > 2 && turns_sharply(c, 1))
-      erase_vertex(1);
-    while(c.back_corner != no_index && c.points.size() > 2 && turns_sharply(c, c.points.size() - 2))
-      erase_vertex(c.points.size() - 2);
+    if(c.front_corner != no_index)
+    {
+      reverse_curve(c);
+      drop_sharp_turns_before_back(c);
+      reverse_curve(c);
+    }
+    if(c.back_corner != no_index)
+      drop_sharp_turns_before_back(c);
   }
 
   // Exact shared points, consistent normals. (Loops without a corner are exact already: every
