@@ -1019,6 +1019,44 @@ TEST_CASE("stage 5: a curve end that ran past a corner, within a growth radius o
           <= completion_corner_tolerance);
 }
 
+TEST_CASE("stage 5: a corner is placed from its curves away from both their ends, also along a short curve to another corner",
+          "[stages][completion]")
+{
+  // Corners A (stage 2 put it 0.35 steps off the true one, at the origin) and B, joined by a
+  // curve shorter than the window of the corner lines; the vertices next to a corner are biased
+  // (here B's, 0.6 steps off the x axis), and placing A from them would tilt its line on the
+  // x axis and move A 0.3 steps off the y axis.
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const Vec a(0.25 * curve_step, 0.25 * curve_step, 0), b(4 * curve_step, 0.6 * curve_step, 0);
+  const Vec x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  std::vector<Vec> ab{a}, up_from_a{a}, up_from_b{b};
+  for(int k = 1; k <= 3; ++k)
+    ab.push_back(x * (k * curve_step));
+  ab.push_back(b);
+  for(const Vec& v : straight(y * curve_step, y, curve_step))
+    up_from_a.push_back(v);
+  for(const Vec& v : straight(Vec(b.x, curve_step, 0), Vec(b.x, 1, 0), curve_step))
+    up_from_b.push_back(v);
+  double ab_length = 0;
+  for(std::size_t k = 1; k < ab.size(); ++k)
+    ab_length += distance(ab[k - 1], ab[k]);
+  // The window ends 3.5 growth radii from A (completion_impl.h, corner_fit_skip + corner_fit_window).
+  REQUIRE(ab_length < 3.5 * net.scales.growth_radius);
+  net.polylines.push_back(make_polyline(ab, -y, -z));
+  net.polylines.push_back(make_polyline(up_from_a, -x, -z));
+  net.polylines.push_back(make_polyline(up_from_b, x, -z));
+  net.polylines[0].front_corner = net.polylines[1].front_corner = 0;
+  net.polylines[0].back_corner = net.polylines[2].front_corner = 1;
+  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(a.x, a.y, a.z), {}, {0, 1}});
+  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(b.x, b.y, b.z), {}, {0, 2}});
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  REQUIRE(net.corners.size() == 2);
+  const Vec placed = to_vec(net.corners[0].point);
+  INFO("corner A at " << placed.x << " " << placed.y << " " << placed.z);
+  CHECK(norm(placed) <= 0.05 * curve_step);
+}
+
 TEST_CASE("stage 5: a curve ending at a sharp turn is split there so that Mesh_3 keeps the turn", "[stages][completion]")
 {
   CGAL::Feature_curve_network<K> net = synthetic_network();

@@ -62,7 +62,10 @@ struct Completion_constants
   /// the vertices from `corner_fit_skip` to `corner_fit_skip + corner_fit_window` growth radii
   /// of arc length away from the corner: the nearest vertices are biased (their stage-2
   /// neighbourhoods hold the third surface, and the smoothing stops at the corner), and farther
-  /// ones follow the bend of a curved crease.
+  /// ones follow the bend of a curved crease. The window also ends `corner_fit_skip` before a
+  /// corner at the curve's other end, whose nearest vertices are biased in the same way: a
+  /// short curve between two corners (the top edge of a gear tooth, two corners 1.7% dB apart
+  /// on CGAL's pinion) would otherwise tilt the line of one corner towards the other.
   static constexpr double corner_fit_skip = 0.5;
   static constexpr double corner_fit_window = 3;
 };
@@ -671,13 +674,16 @@ private:
 
   // The line fitted to the vertices of curve `c` at arc lengths from `corner_fit_skip` to
   // `corner_fit_skip + corner_fit_window` growth radii from its front (`back == false`) or back
-  // end, as a point and a unit direction; false if fewer than two vertices lie in the window.
+  // end, and at least `corner_fit_skip` from a corner at its other end, as a point and a unit
+  // direction; false if fewer than two vertices lie in the window.
   bool end_line(const Working_polyline& c, bool back, Free_end& line) const
   {
     const std::size_t n = c.points.size();
     auto at = [&](std::size_t k) -> const Vec3& { return back ? c.points[n - 1 - k] : c.points[k]; };
     const double from = Constants::corner_fit_skip * m_scales.growth_radius;
-    const double to = from + Constants::corner_fit_window * m_scales.growth_radius;
+    double to = from + Constants::corner_fit_window * m_scales.growth_radius;
+    if((back ? c.front_corner : c.back_corner) != no_index)
+      to = (std::min)(to, curve_length(c) - from);
     std::vector<Vec3> window;
     double arc = 0;
     for(std::size_t k = 1; k < n && arc <= to; ++k)
