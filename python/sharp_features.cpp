@@ -382,6 +382,7 @@ py::dict scales_dict(const CGAL::Sharp_feature_scales<double>& s)
   d["growth_radius"] = s.growth_radius;
   d["completion_distance"] = s.completion_distance;
   d["sampled_fraction"] = s.sampled_fraction;
+  d["search_fraction"] = s.search_fraction;
   return d;
 }
 
@@ -491,6 +492,7 @@ Scales read_scales(const py::handle& object)
   s.growth_radius = read_real("growth_radius", field("growth_radius"));
   s.completion_distance = read_real("completion_distance", field("completion_distance"));
   s.sampled_fraction = read_real("sampled_fraction", field("sampled_fraction"));
+  s.search_fraction = read_real("search_fraction", field("search_fraction"));
   // The library's rules (ValueError through pybind11's translation of std::invalid_argument),
   // here so that an unpickled tile's scales fail when it is read, not when it is stitched.
   sfe_internal::require_valid_scales(s);

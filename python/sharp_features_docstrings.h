@@ -118,7 +118,7 @@ constexpr const char* scales = R"doc(The scales the extraction used, derived fro
 
 A dict with the fields of CGAL::Sharp_feature_scales: spacing, noise, candidate_neighbors,
 candidate_radius, rmls_neighbors, residual_threshold, rmls_tolerance, corner_radius,
-growth_radius, completion_distance, sampled_fraction.)doc";
+growth_radius, completion_distance, sampled_fraction, search_fraction.)doc";
 
 constexpr const char* timings = R"doc(Wall-clock seconds of each step.
 
@@ -169,8 +169,8 @@ whole cloud. scales is the dict estimate_scales() returns; the keyword number_of
 Raises
 ------
 ValueError
-    scales lacks a field, a distance in it is negative or not finite, or its sampled_fraction is
-    not in (0, 1].
+    scales lacks a field, a distance in it is negative or not finite, its sampled_fraction is
+    not in (0, 1], or its search_fraction is not in (0, sampled_fraction].
 )doc";
 
 constexpr const char* extract_tile = R"doc(Stages 1 to 3 on one tile: the feature points its core box owns.

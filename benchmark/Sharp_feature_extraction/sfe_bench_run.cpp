@@ -222,7 +222,8 @@ int main(int argc, char** argv)
           .add("scale_candidate_neighbors", s.candidate_neighbors)
           .add("scale_rmls_neighbors", s.rmls_neighbors)
           .add("scale_residual_threshold", s.residual_threshold / truth.diagonal)
-          .add("scale_sampled_fraction", s.sampled_fraction);
+          .add("scale_sampled_fraction", s.sampled_fraction)
+          .add("scale_search_fraction", s.search_fraction);
 
       const std::vector<double> eps = report_eps();
       add_curve_fields(line, "ours",

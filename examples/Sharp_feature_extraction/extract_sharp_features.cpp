@@ -189,7 +189,7 @@ int main(int argc, char** argv)
               << s.candidate_neighbors << "/" << s.rmls_neighbors << ", threshold " << s.residual_threshold
               << ", RMLS tolerance " << s.rmls_tolerance << ", corner radius " << s.corner_radius
               << ", growth radius " << s.growth_radius << ", completion " << s.completion_distance
-              << ", sampled fraction " << s.sampled_fraction << "\n"
+              << ", sampled fraction " << s.sampled_fraction << ", search fraction " << s.search_fraction << "\n"
               << "time [s]          context " << t.context << ", candidates " << t.candidates
               << ", projection " << t.projection
               << ", smoothing " << t.smoothing << ", growing " << t.growing << ", completion " << t.completion

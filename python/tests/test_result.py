@@ -10,7 +10,8 @@ import pytest
 import sharp_features
 
 SCALES = {"spacing", "noise", "candidate_neighbors", "candidate_radius", "rmls_neighbors", "residual_threshold",
-          "rmls_tolerance", "corner_radius", "growth_radius", "completion_distance", "sampled_fraction"}
+          "rmls_tolerance", "corner_radius", "growth_radius", "completion_distance", "sampled_fraction",
+          "search_fraction"}
 TIMINGS = {"context", "candidates", "projection", "smoothing", "growing", "completion", "total"}
 
 

@@ -101,8 +101,8 @@ def test_bad_tiles_and_keywords_are_rejected(cube, scales):
         sharp_features.extract_tile(cube, (0, 0, 0), (1, 1, 1), scales, growth_radius=0.1)
     with pytest.raises(ValueError, match="scales"):
         sharp_features.tile_halo_width({"spacing": 1.0})
-    for name, value in (("sampled_fraction", 0.0), ("sampled_fraction", 1.5), ("growth_radius", float("nan")),
-                        ("spacing", -1.0)):
+    for name, value in (("sampled_fraction", 0.0), ("sampled_fraction", 1.5), ("search_fraction", 0.0),
+                        ("search_fraction", 1.5), ("growth_radius", float("nan")), ("spacing", -1.0)):
         with pytest.raises(ValueError, match="scales." + name):
             sharp_features.tile_halo_width(dict(scales, **{name: value}))
     tile = slabs(cube, scales, 2)[0]

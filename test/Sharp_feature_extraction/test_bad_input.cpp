@@ -246,7 +246,9 @@ TEST_CASE("scales given to a context, to stages 2, 4 and 5 or to the tile halo a
     [&](Scales& s) { s.rmls_tolerance = -inf; },  [&](Scales& s) { s.corner_radius = nan; },
     [&](Scales& s) { s.growth_radius = -0.5; },   [&](Scales& s) { s.completion_distance = inf; },
     [&](Scales& s) { s.sampled_fraction = 0; },   [&](Scales& s) { s.sampled_fraction = 1.5; },
-    [&](Scales& s) { s.sampled_fraction = nan; }};
+    [&](Scales& s) { s.sampled_fraction = nan; }, [&](Scales& s) { s.search_fraction = 0; },
+    [&](Scales& s) { s.search_fraction = nan; },  [&](Scales& s) { s.search_fraction = 1.5; },
+    [&](Scales& s) { s.sampled_fraction = 0.5; s.search_fraction = 0.6; }};
   for(std::size_t i = 0; i < breakages.size(); ++i)
   {
     INFO("breakage " << i);

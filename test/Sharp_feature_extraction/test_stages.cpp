@@ -276,26 +276,76 @@ TEST_CASE("thinning: the kept points depend on the points alone, nest, and stand
   CHECK(kept_in_half == kept_in_part);
 }
 
-TEST_CASE("scales: where the noise calls for neighbourhoods of more than 400 points, 400 kept points span their radius",
+TEST_CASE("thinning to means: each kept point moves to the mean of the points it stands for, which stage 2 refines on",
+          "[stages][scales]")
+{
+  namespace sfe = CGAL::Sharp_feature_extraction::internal;
+  const std::vector<Point_3> points = to_points<Point_3>(sample(unit_cube(), 4000, noisy));
+  sfe::Indexed_input kept, means;
+  sfe::index_input_points<CGAL::Sequential_tag>(points, CGAL::parameters::default_values(), kept);
+  sfe::index_input_points<CGAL::Sequential_tag>(points, CGAL::parameters::default_values(), means);
+  const std::vector<sfe::Vec3> sampled = means.points;
+  REQUIRE(sfe::thin_input<CGAL::Sequential_tag>(0.25, kept));
+  REQUIRE(sfe::thin_input<CGAL::Sequential_tag>(0.25, means, sfe::Kept_points::means));
+  CHECK(!kept.refinement);
+  REQUIRE(means.refinement);
+  // The same points are kept, and represent the same points; the points before the thinning
+  // are those of the refinement.
+  CHECK(means.input_index == kept.input_index);
+  CHECK(means.position_of_input == kept.position_of_input);
+  CHECK(means.refinement->points == sampled);
+  CHECK(means.refinement->index.size() == sampled.size());
+  // Each kept point is the mean of the input points that it represents (copies: none here).
+  std::vector<sfe::Vec3> sum(means.points.size(), sfe::Vec3::Zero());
+  std::vector<double> count(means.points.size(), 0);
+  for(std::size_t j = 0; j < points.size(); ++j)
+  {
+    sum[means.position_of_input[j]] += sfe::to_vec3(points[j]);
+    count[means.position_of_input[j]] += 1;
+  }
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < means.points.size(); ++i)
+  {
+    REQUIRE((means.points[i] - sum[i] / count[i]).norm() <= 1e-12);
+    if(count[i] > 1)
+      ++moved;
+  }
+  CHECK(moved > means.points.size() / 2);
+  // The index answers with the means.
+  std::vector<std::size_t> nearest;
+  means.index.nearest(means.points[7], 1, nearest);
+  CHECK(nearest == std::vector<std::size_t>{7});
+}
+
+TEST_CASE("scales: where the noise calls for neighbourhoods of more than 100 points, 100 means span their radius",
           "[stages][scales]")
 {
   // Uniform noise of 7% dB on the unit square spans several spacings at 12,000 points: the
-  // noise calls for stage-1 neighbourhoods of k > 400 points (567). The cloud is thinned to
-  // 400 / k, and the stage-1 radius of the kept points is the radius of k points of the whole
-  // cloud (within 0.6%). With the neighbourhoods capped at 400 points instead, it was the
-  // radius of 400 points: sqrt(400 / k) of it, 0.84 here.
+  // noise calls for stage-1 neighbourhoods of k > 400 points (567). The cloud is sampled to
+  // 400 / k and thinned to 100 / k as means, and the stage-1 radius of the means is the radius
+  // of k points of the whole cloud (within 0.6%). With the neighbourhoods capped at 100 points
+  // instead, it was the radius of 100 points: sqrt(100 / k) of it, 0.42 here. With 3.5% noise
+  // (k < 400) the cloud is not sampled, only thinned to means.
   const double tolerance = 0.05;
-  const std::vector<Point_3> points = to_points<Point_3>(sample(square_plane(), 12000, 0.07));
+  const double noise = GENERATE(0.07, 0.035);
+  const std::vector<Point_3> points = to_points<Point_3>(sample(square_plane(), 12000, noise));
   const CGAL::Sharp_feature_extraction_context<K> estimated(points);
   const CGAL::Sharp_feature_scales<double> scales = estimated.scales();
-  REQUIRE(scales.sampled_fraction < 1);
-  CHECK(scales.candidate_neighbors == 400);
-  // A context given these scales (a tile's, say) fits the same kept points.
+  INFO("noise " << noise << ", sampled fraction " << scales.sampled_fraction << ", search fraction "
+       << scales.search_fraction);
+  REQUIRE(scales.search_fraction < 1);
+  CHECK(scales.candidate_neighbors == 100);
+  CHECK(scales.search_fraction < scales.sampled_fraction);
+  if(noise > 0.06)
+    CHECK(scales.sampled_fraction == Approx(4 * scales.search_fraction));
+  else
+    CHECK(scales.sampled_fraction == 1);
+  // A context given these scales (a tile's, say) runs on the same means.
   const CGAL::Sharp_feature_extraction_context<K> given(points, scales);
-  CHECK(estimated.number_of_distinct_points() < points.size());
+  CHECK(double(estimated.number_of_distinct_points()) < 0.4 * double(points.size()));
   CHECK(given.number_of_distinct_points() == estimated.number_of_distinct_points());
   // The median distance from a point of the whole cloud to its k-th nearest point.
-  const std::size_t k = std::size_t(400 / scales.sampled_fraction);
+  const std::size_t k = std::size_t(100 / scales.search_fraction);
   const std::size_t stride = 97;
   std::vector<double> radii;
   for(std::size_t i = 0; i < points.size(); i += stride)
@@ -414,11 +464,13 @@ TEST_CASE("stage 2: on a cube with 0.5% noise, half the edge points lie within 0
 
 /// Stage 2, noise 1% dB: share of the candidates on a crease (within `on_crease` of it, away
 /// from its ends) that give an edge point within `edge_tolerance_on_crease` of a crease, for two
-/// planes bent by 60 and 70 degrees and for the cube (90). Measured at 30,000 points: 28%, 66%
-/// and 98% (without the split of stage 2's tilted planes: 15%, 53% and 97%).
+/// planes bent by 60 and 70 degrees and for the cube (90). Measured at 30,000 points: 41%, 60%
+/// and 98%, where the planes run on means (see `Sharp_feature_scales::search_fraction`; 28%, 66%
+/// and 98% on the points themselves, and 15%, 53% and 97% without the split of stage 2's tilted
+/// planes).
 constexpr double heavy_noise = 0.01;
 constexpr double on_crease = 0.005;                   // relative to dB: the scoring eps
-constexpr std::array<double, 3> minimum_edge_share_on_crease = {{0.2, 0.6, 0.9}};
+constexpr std::array<double, 3> minimum_edge_share_on_crease = {{0.3, 0.5, 0.9}};
 constexpr double edge_tolerance_on_crease = 0.01;     // relative to dB: the noise radius
 /// Candidates this close to the end of their crease (corners, border) do not count.
 constexpr double crease_end_margin = 0.1;             // relative to dB
@@ -443,10 +495,16 @@ Crease_candidates candidates_on_creases(const Stages& s, CreaseFilter counts)
     has_edge[e.source] = true;
     edge_distance[e.source] = nearest_crease(s.shape, to_vec(e.point)).second;
   }
+  // Where the noise made stage 1 and 2 run on means (see `Sharp_feature_scales::search_fraction`),
+  // only the point kept for a mean can be the source of an edge point: the others do not count.
+  namespace sfe = CGAL::Sharp_feature_extraction::internal;
+  const double searched = s.candidates.scales.search_fraction;
   Crease_candidates result;
   for(std::size_t c : s.candidates.indices)
   {
     const Vec p = to_vec(s.points[c]);
+    if(searched < 1 && !(sfe::sampling_value(sfe::to_vec3(s.points[c])) < searched))
+      continue;
     const std::pair<std::size_t, double> nearest = nearest_crease(s.shape, p);
     const Crease& crease = s.shape.creases[nearest.first];
     if(!counts(crease) || nearest.second > on_crease * s.diagonal

@@ -295,7 +295,8 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \throws std::invalid_argument if a coordinate is not finite, a parameter is out of range,
-  ///   or a scale is negative or not finite, or `scales.sampled_fraction` is not in (0, 1].
+  ///   or a scale is negative or not finite, or `scales.sampled_fraction` is not in (0, 1], or
+  ///   `scales.search_fraction` is not in (0, `scales.sampled_fraction`].
   template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
   Sharp_feature_extraction_context(const PointRange& points, const Sharp_feature_scales<FT>& scales,
                                    const NamedParameters& np = parameters::default_values())
@@ -306,8 +307,7 @@ public:
     index(points, np);
     m_scales = Sharp_feature_extraction::internal::convert_scales<double>(scales);
     Sharp_feature_extraction::internal::override_scales(np, m_scales);
-    if(m_scales.sampled_fraction < 1)
-      Sharp_feature_extraction::internal::thin_input<ConcurrencyTag>(m_scales.sampled_fraction, m_input);
+    Sharp_feature_extraction::internal::sample_input<ConcurrencyTag>(m_scales, m_input);
     m_construction_time = timer.time();
   }
 
@@ -320,8 +320,9 @@ public:
   /// The number of input points, copies included.
   std::size_t number_of_points() const { return m_input.input_size(); }
 
-  /// The number of distinct input points that the stages fit: all of them, unless the noise
-  /// made the context thin the cloud (see `Sharp_feature_scales::sampled_fraction`).
+  /// The number of points that stage 1 and the forward search of stage 2 run on: the distinct
+  /// input points, unless the noise made the context thin the cloud (see
+  /// `Sharp_feature_scales::sampled_fraction` and `Sharp_feature_scales::search_fraction`).
   std::size_t number_of_distinct_points() const { return m_input.points.size(); }
 
   /// Wall-clock time taken by the constructor, in seconds.

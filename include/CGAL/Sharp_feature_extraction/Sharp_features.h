@@ -44,13 +44,21 @@ struct Sharp_feature_scales
   FT growth_radius = 0;
   /// Largest gap that completion bridges (stage 5).
   FT completion_distance = 0;
-  /// Fraction of the distinct input points that the stages fit: 1, unless the noise spans so
-  /// many spacings that the stage-1 neighbourhoods it calls for would hold more than 400
-  /// points. The cloud is then thinned to the fraction that leaves 400 in their radius, by a
-  /// hash of each point's coordinates (so that a tile keeps the points the whole cloud keeps;
-  /// see `CGAL::estimate_sharp_feature_scales()`). `spacing` and the neighbourhood sizes are
-  /// those of the kept points, and every other point takes the results of the nearest kept one.
+  /// Fraction of the distinct input points to which stage 2 fits its surfaces: 1, unless the
+  /// noise spans so many spacings that the stage-1 neighbourhoods it calls for would hold more
+  /// than 400 points. The cloud is then thinned to the fraction that leaves 400 in their
+  /// radius, by a hash of each point's coordinates (so that a tile keeps the points the whole
+  /// cloud keeps; see `CGAL::estimate_sharp_feature_scales()`).
   FT sampled_fraction = 1;
+  /// Fraction of the distinct input points on which stage 1 and the forward search of stage 2
+  /// run: 1, unless the noise calls for stage-1 neighbourhoods of more than 100 points. The
+  /// sampled points are then thinned further, by the same hash, to the fraction that leaves 100
+  /// in their radius, and each point kept moves to the mean of the sampled points that it
+  /// represents (those nearer to it than to any other point kept). `spacing` and the
+  /// neighbourhood sizes are those of the means, every other point takes the results of the
+  /// mean that represents it, and stage 2 refines the surfaces that it finds on the means on
+  /// the sampled points. At most `sampled_fraction`.
+  FT search_fraction = 1;
 };
 
 /// \ingroup PkgSharpFeatureExtractionRef

@@ -19,10 +19,12 @@ namespace CGAL {
 /// the RMS residuals of the jets fitted to that many, repeated while it grows). From these:
 /// the stage-1 neighbourhood size (36 points, grown with the square of noise/s above 0.25 for
 /// the noise over 36 points, or above 0.3 for the widened one if that asks for more, at most
-/// 400; where the noise asks for more, the cloud is thinned to the fraction 400 / that size,
-/// by a hash of each point's coordinates, and the scales are measured again on the kept points
-/// with 400-point neighbourhoods, which span the radius the noise asked for: see
-/// `Sharp_feature_scales::sampled_fraction`), the stage-2 size (twice as many), the RMLS tolerance
+/// 100; where the noise asks for k > 100, the cloud is thinned, by a hash of each point's
+/// coordinates, to the fraction 400 / k if below 1 (the sampled points, see
+/// `Sharp_feature_scales::sampled_fraction`), then to 100 / k, each point kept moving to the
+/// mean of the sampled points it represents (see `Sharp_feature_scales::search_fraction`), and
+/// the scales are measured again on the means with 100-point neighbourhoods, which span the
+/// radius the noise asked for), the stage-2 size (twice as many), the RMLS tolerance
 /// (2.25 x noise, at least 0.05 s), the corner radius (median radius of a stage-2
 /// neighbourhood), the growth radius (median radius of a stage-1 neighbourhood) and the
 /// completion distance (max(7 s, 3 x growth radius)). A scale given as a named parameter

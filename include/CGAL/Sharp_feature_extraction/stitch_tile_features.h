@@ -30,7 +30,8 @@ bool same_scales(const Sharp_feature_scales<FT>& a, const Sharp_feature_scales<F
     && a.candidate_radius == b.candidate_radius && a.rmls_neighbors == b.rmls_neighbors
     && a.residual_threshold == b.residual_threshold && a.rmls_tolerance == b.rmls_tolerance
     && a.corner_radius == b.corner_radius && a.growth_radius == b.growth_radius
-    && a.completion_distance == b.completion_distance && a.sampled_fraction == b.sampled_fraction;
+    && a.completion_distance == b.completion_distance && a.sampled_fraction == b.sampled_fraction
+    && a.search_fraction == b.search_fraction;
 }
 
 /// The tiles in the order of their core boxes, checked: one set of scales, disjoint cores.

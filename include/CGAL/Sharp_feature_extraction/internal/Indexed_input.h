@@ -27,6 +27,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -81,6 +82,13 @@ struct Vec3_as_point_map
 /// The first copy in input order represents all of them; per-point outputs give every copy the
 /// value of its representative, so a cloud and the same cloud with its points repeated give the
 /// same curves.
+/// Points with their spatial index.
+struct Indexed_points
+{
+  std::vector<Vec3> points;
+  Point_index index;
+};
+
 struct Indexed_input
 {
   /// The distinct points, in spatial order.
@@ -90,6 +98,10 @@ struct Indexed_input
   /// `position_of_input[j]` is the position in `points` of input point `j` (of its first copy).
   std::vector<std::size_t> position_of_input;
   Point_index index;
+  /// When `points` are means (see `Sharp_feature_scales::search_fraction`): the points that
+  /// they are the means of, on which stage 2 refines the surfaces it found on the means;
+  /// null otherwise.
+  std::unique_ptr<Indexed_points> refinement;
 
   /// The number of input points, copies included.
   std::size_t input_size() const { return position_of_input.size(); }
@@ -241,13 +253,24 @@ inline double sampling_value(const Vec3& p)
   return double(h >> (64 - mantissa_bits)) * scale;
 }
 
+/// What `thin_input()` makes of the points it keeps.
+enum class Kept_points
+{
+  /// They stay as they are.
+  as_sampled,
+  /// Each becomes the mean of the points it represents (itself included), and the points
+  /// before the thinning become `Indexed_input::refinement`.
+  means
+};
+
 /// Keeps the points of `input` whose `sampling_value()` is below `fraction`, in their spatial
 /// order, with a new index; every other point (and its copies) is then represented by the
 /// nearest kept point, as a copy is by its first. The kept points of `fraction` include those
-/// of any smaller fraction. Returns false, leaving `input` as it is, when `fraction` keeps
+/// of any smaller fraction. With `Kept_points::means`, each kept point then moves to the mean
+/// of the points it represents. Returns false, leaving `input` as it is, when `fraction` keeps
 /// every point or none.
 template <typename ConcurrencyTag>
-bool thin_input(double fraction, Indexed_input& input)
+bool thin_input(double fraction, Indexed_input& input, Kept_points kept_points = Kept_points::as_sampled)
 {
   // Marks a point whose representative is not known yet.
   constexpr std::size_t no_representative = std::size_t(-1);
@@ -264,7 +287,7 @@ bool thin_input(double fraction, Indexed_input& input)
     }
   if(kept.empty() || kept.size() == n)
     return false;
-  const std::vector<Vec3> all = std::move(input.points);
+  std::vector<Vec3> all = std::move(input.points);
   input.points = std::move(kept);
   input.input_index = std::move(kept_input_index);
   input.index.template build<ConcurrencyTag>(input.points);
@@ -278,9 +301,37 @@ bool thin_input(double fraction, Indexed_input& input)
         kept_position[i] = nearest.front();
       }
   });
+  if(kept_points == Kept_points::means)
+  {
+    // Summed in the order of the points: the means do not depend on the thread count.
+    std::vector<Vec3> sum(input.points.size(), Vec3::Zero());
+    std::vector<std::size_t> count(input.points.size(), 0);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      sum[kept_position[i]] += all[i];
+      ++count[kept_position[i]];
+    }
+    for(std::size_t j = 0; j < input.points.size(); ++j)
+      input.points[j] = sum[j] / double(count[j]);
+    input.index.template build<ConcurrencyTag>(input.points);
+    input.refinement.reset(new Indexed_points());
+    input.refinement->points = std::move(all);
+    input.refinement->index.template build<ConcurrencyTag>(input.refinement->points);
+  }
   for(std::size_t& position : input.position_of_input)
     position = kept_position[position];
   return true;
+}
+
+/// Thins `input` as `scales` say: to their `sampled_fraction`, then to their
+/// `search_fraction` with the kept points moved to means (see `Sharp_feature_scales`).
+template <typename ConcurrencyTag, typename Scales>
+void sample_input(const Scales& scales, Indexed_input& input)
+{
+  if(scales.sampled_fraction < 1)
+    thin_input<ConcurrencyTag>(scales.sampled_fraction, input);
+  if(scales.search_fraction < scales.sampled_fraction)
+    thin_input<ConcurrencyTag>(scales.search_fraction, input, Kept_points::means);
 }
 
 } // namespace internal

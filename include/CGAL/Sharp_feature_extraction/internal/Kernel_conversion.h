@@ -59,6 +59,7 @@ Sharp_feature_scales<TargetFT> convert_scales(const Sharp_feature_scales<SourceF
   out.growth_radius = value(s.growth_radius);
   out.completion_distance = value(s.completion_distance);
   out.sampled_fraction = value(s.sampled_fraction);
+  out.search_fraction = value(s.search_fraction);
   return out;
 }
 

@@ -171,7 +171,7 @@ Completion_parameters read_completion_parameters(const NamedParameters& np, Comp
 }
 
 /// Scales given by the user (see `Sharp_feature_scales`): every distance finite and
-/// non-negative, the sampled fraction in (0, 1]. The all-zero scales of a cloud without
+/// non-negative, the sampled fraction in (0, 1], the search fraction in (0, sampled fraction]. The all-zero scales of a cloud without
 /// extent pass (the stages then find nothing).
 inline void require_valid_scales(const Sharp_feature_scales<double>& scales)
 {
@@ -185,6 +185,8 @@ inline void require_valid_scales(const Sharp_feature_scales<double>& scales)
   require_distance(scales.growth_radius, "scales.growth_radius");
   require_distance(scales.completion_distance, "scales.completion_distance");
   require(scales.sampled_fraction > 0 && scales.sampled_fraction <= 1, "scales.sampled_fraction must be in (0, 1]");
+  require(scales.search_fraction > 0 && scales.search_fraction <= scales.sampled_fraction,
+          "scales.search_fraction must be in (0, scales.sampled_fraction]");
 }
 
 /// Every scale that `np` gives replaces its value in `scales` (the scales derived from it do

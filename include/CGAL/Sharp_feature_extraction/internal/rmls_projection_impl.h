@@ -127,6 +127,10 @@ class Forward_search
 public:
   std::vector<Vec3> local;          // the neighbourhood, nearest to the candidate first
   std::vector<Rmls_surface> surfaces;
+  /// How many points of `local` stand in its radius for one point counted by the neighbourhood
+  /// sizes of the scales: 1, or `sampled_fraction / search_fraction` once `local` holds the
+  /// sampled points that the means stand for (see `refine_on_sampled_points()`).
+  double points_per_counted_point = 1;
 
   /// The centre of the neighbourhood: its point nearest to the candidate (the candidate itself).
   const Vec3& center() const { return local.front(); }
@@ -596,6 +600,18 @@ inline int surface_degree(const Scales& scales, const Projection_parameters& par
   return noise_dominates(scales) ? 1 : parameters.degree_fitting;
 }
 
+/// Those of `surfaces` with enough members to be a surface, if at least two; none otherwise.
+inline std::vector<const Rmls_surface*> supported_surfaces(const std::vector<Rmls_surface*>& surfaces)
+{
+  std::vector<const Rmls_surface*> kept;
+  for(const Rmls_surface* s : surfaces)
+    if(s->members.size() >= Forward_search_constants::min_surface_points)
+      kept.push_back(s);
+  if(kept.size() < 2)
+    kept.clear();
+  return kept;
+}
+
 /// The distinct smooth surfaces around the candidate `p`, whose neighbourhood is in
 /// `search.local`: the forward search, nearly parallel surfaces merged, and the competitive
 /// refinement. Fewer than two surfaces means no feature at `p`.
@@ -636,13 +652,35 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
   }
   if(distinct.size() >= 2)
     search.refine(distinct, scales.rmls_tolerance, degree, p);
-  std::vector<const Rmls_surface*> kept;
-  for(const Rmls_surface* s : distinct)
-    if(s->members.size() >= Constants::min_surface_points)
-      kept.push_back(s);
-  if(kept.size() < 2)
-    kept.clear();
-  return kept;
+  return supported_surfaces(distinct);
+}
+
+/// Refines `found`, the surfaces that `find_surfaces()` found around `p` on the means of the
+/// sampled points (see `Sharp_feature_scales::search_fraction`), on the `neighbors` sampled
+/// points nearest `p`, which replace the means in `search.local`: the search sees the means,
+/// whose noise averages out, and the fits see every sampled point, also near the crease, where
+/// a mean of points from both sides lies on neither. Fewer than two surfaces means no feature.
+inline std::vector<const Rmls_surface*> refine_on_sampled_points(Forward_search& search,
+                                                                 const std::vector<const Rmls_surface*>& found,
+                                                                 const Indexed_points& sampled, std::size_t neighbors,
+                                                                 const Vec3& p, const Scales& scales,
+                                                                 const Projection_parameters& parameters,
+                                                                 Point_index::Ranked_query& query,
+                                                                 std::vector<std::size_t>& nearest)
+{
+  sampled.index.nearest_ranked(p, neighbors, query, nearest);
+  search.local.clear();
+  for(std::size_t j : nearest)
+    search.local.push_back(sampled.points[j]);
+  search.points_per_counted_point = scales.sampled_fraction / scales.search_fraction;
+  // The surfaces that `found` points to, which `search` owns, in the order of `found`.
+  std::vector<Rmls_surface*> set;
+  for(const Rmls_surface* f : found)
+    for(Rmls_surface& s : search.surfaces)
+      if(&s == f)
+        set.push_back(&s);
+  search.refine(set, scales.rmls_tolerance, surface_degree(scales, parameters), p);
+  return supported_surfaces(set);
 }
 
 /// The centroid of the members of the surfaces `set[0..count)` other than `self`, weighted by
@@ -688,7 +726,7 @@ struct Surface_checks
   /// theirs, and the bound cost spool 0.954 -> 0.951 there (0.962 -> 0.956 with 5% outliers).
   static double largest_offset(const Forward_search& search, const Scales& scales)
   {
-    const std::size_t k = scales.candidate_neighbors;
+    const std::size_t k = std::size_t(std::lround(double(scales.candidate_neighbors) * search.points_per_counted_point));
     if(!noise_dominates(scales) || k == 0 || k > search.local.size())
       return search.radius();
     return (search.local[k - 1] - search.center()).norm();
@@ -1018,7 +1056,9 @@ private:
   const Projection_parameters& m_parameters;
   std::vector<Projection>& m_projections;
   Forward_search m_search;
-  Point_index::Ranked_query m_query;
+  // The queries of the neighbourhoods of the means and of the sampled points, each of which
+  // starts from the radius of the previous one of its kind.
+  Point_index::Ranked_query m_query, m_sampled_query;
   std::vector<std::size_t> m_neighbors, m_own_search;
 
   const Vec3& point(std::size_t cell, std::size_t rank) const { return m_input.points[m_cells.member(cell, rank)]; }
@@ -1031,7 +1071,14 @@ private:
     m_search.local.clear();
     for(std::size_t j : m_neighbors)
       m_search.local.push_back(m_input.points[j]);
-    return find_surfaces(m_search, p, m_scales, m_parameters);
+    m_search.points_per_counted_point = 1;
+    const std::vector<const Rmls_surface*> found = find_surfaces(m_search, p, m_scales, m_parameters);
+    if(found.empty() || !m_input.refinement)
+      return found;
+    const std::size_t sampled_neighbors = std::size_t(
+      std::lround(double(m_scales.rmls_neighbors) * m_scales.sampled_fraction / m_scales.search_fraction));
+    return refine_on_sampled_points(m_search, found, *m_input.refinement, sampled_neighbors, p, m_scales,
+                                    m_parameters, m_sampled_query, m_neighbors);
   }
 
   // Under noise, the first two planes that the search around the candidate found, if parallel,
