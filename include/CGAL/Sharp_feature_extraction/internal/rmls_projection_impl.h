@@ -132,7 +132,8 @@ public:
   /// sampled points that the means stand for (see `refine_on_sampled_points()`).
   double points_per_counted_point = 1;
 
-  /// The centre of the neighbourhood: its point nearest to the candidate (the candidate itself).
+  /// The centre of the neighbourhood: its point nearest to the candidate (the candidate itself,
+  /// unless `local` holds the sampled points that the means stand for).
   const Vec3& center() const { return local.front(); }
   /// The radius of the neighbourhood: the distance from its centre to its farthest point.
   double radius() const { return (local.back() - local.front()).norm(); }
@@ -618,7 +619,6 @@ inline std::vector<const Rmls_surface*> supported_surfaces(const std::vector<Rml
 inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, const Vec3& p,
                                                       const Scales& scales, const Projection_parameters& parameters)
 {
-  typedef Forward_search_constants Constants;
   const int degree = surface_degree(scales, parameters);
   search.run(scales.rmls_tolerance, degree);
   const double cos_sharp = std::cos(radians(parameters.sharpness_angle));
