@@ -691,7 +691,8 @@ def write_report(data, report, quick):
               f"the residuals of jets fitted to neighbourhoods widened towards 5 noise scales, at most 400 points: "
               f"at this noise they still lie inside the band and absorb it) "
               f"is {fmt(heavy['scale_noise'] / heavy['scale_spacing'], 2)} spacings. The neighbourhoods grown from "
-              f"it hold {heavy['scale_candidate_neighbors']} and {heavy['scale_rmls_neighbors']} points, about as "
+              f"it hold {heavy['scale_candidate_neighbors']} and {heavy['scale_rmls_neighbors']} "
+              f"{'means' if heavy.get('scale_search_fraction', 1) < 1 else 'points'}, about as "
               "wide as the band: the fits see a slab, not a surface (issue 11).")
         w("\n")
 
