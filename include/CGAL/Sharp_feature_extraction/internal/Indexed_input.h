@@ -70,6 +70,13 @@ struct Vec3_as_point_map
   }
 };
 
+/// Points with their spatial index.
+struct Indexed_points
+{
+  std::vector<Vec3> points;
+  Point_index index;
+};
+
 /// The distinct input points in double precision, in spatial (Hilbert curve) order, with their
 /// spatial index: what stages 1 and 2 search. Neighbours in space are then neighbours in memory,
 /// and consecutive queries visit the same part of the tree, which makes the neighbour searches
@@ -82,13 +89,6 @@ struct Vec3_as_point_map
 /// The first copy in input order represents all of them; per-point outputs give every copy the
 /// value of its representative, so a cloud and the same cloud with its points repeated give the
 /// same curves.
-/// Points with their spatial index.
-struct Indexed_points
-{
-  std::vector<Vec3> points;
-  Point_index index;
-};
-
 struct Indexed_input
 {
   /// The distinct points, in spatial order.

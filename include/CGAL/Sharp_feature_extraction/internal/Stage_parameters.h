@@ -171,8 +171,8 @@ Completion_parameters read_completion_parameters(const NamedParameters& np, Comp
 }
 
 /// Scales given by the user (see `Sharp_feature_scales`): every distance finite and
-/// non-negative, the sampled fraction in (0, 1], the search fraction in (0, sampled fraction]. The all-zero scales of a cloud without
-/// extent pass (the stages then find nothing).
+/// non-negative, the sampled fraction in (0, 1], the search fraction in (0, sampled fraction].
+/// The all-zero scales of a cloud without extent pass (the stages then find nothing).
 inline void require_valid_scales(const Sharp_feature_scales<double>& scales)
 {
   using namespace parameter_reading;

@@ -602,10 +602,10 @@ inline int surface_degree(const Scales& scales, const Projection_parameters& par
 }
 
 /// Those of `surfaces` with enough members to be a surface, if at least two; none otherwise.
-inline std::vector<const Rmls_surface*> supported_surfaces(const std::vector<Rmls_surface*>& surfaces)
+inline std::vector<Rmls_surface*> supported_surfaces(const std::vector<Rmls_surface*>& surfaces)
 {
-  std::vector<const Rmls_surface*> kept;
-  for(const Rmls_surface* s : surfaces)
+  std::vector<Rmls_surface*> kept;
+  for(Rmls_surface* s : surfaces)
     if(s->members.size() >= Forward_search_constants::min_surface_points)
       kept.push_back(s);
   if(kept.size() < 2)
@@ -616,7 +616,7 @@ inline std::vector<const Rmls_surface*> supported_surfaces(const std::vector<Rml
 /// The distinct smooth surfaces around the candidate `p`, whose neighbourhood is in
 /// `search.local`: the forward search, nearly parallel surfaces merged, and the competitive
 /// refinement. Fewer than two surfaces means no feature at `p`.
-inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, const Vec3& p,
+inline std::vector<Rmls_surface*> find_surfaces(Forward_search& search, const Vec3& p,
                                                       const Scales& scales, const Projection_parameters& parameters)
 {
   const int degree = surface_degree(scales, parameters);
@@ -656,31 +656,26 @@ inline std::vector<const Rmls_surface*> find_surfaces(Forward_search& search, co
 }
 
 /// Refines `found`, the surfaces that `find_surfaces()` found around `p` on the means of the
-/// sampled points (see `Sharp_feature_scales::search_fraction`), on the `neighbors` sampled
-/// points nearest `p`, which replace the means in `search.local`: the search sees the means,
-/// whose noise averages out, and the fits see every sampled point, also near the crease, where
-/// a mean of points from both sides lies on neither. Fewer than two surfaces means no feature.
-inline std::vector<const Rmls_surface*> refine_on_sampled_points(Forward_search& search,
-                                                                 const std::vector<const Rmls_surface*>& found,
-                                                                 const Indexed_points& sampled, std::size_t neighbors,
-                                                                 const Vec3& p, const Scales& scales,
-                                                                 const Projection_parameters& parameters,
-                                                                 Point_index::Ranked_query& query,
-                                                                 std::vector<std::size_t>& nearest)
+/// sampled points (see `Sharp_feature_scales::search_fraction`), on the sampled points nearest
+/// `p` that span the radius of a stage-2 neighbourhood of means, which replace the means in
+/// `search.local`: the search sees the means, whose noise averages out, and the fits see every
+/// sampled point, also near the crease, where a mean of points from both sides lies on
+/// neither. Fewer than two surfaces means no feature.
+inline std::vector<Rmls_surface*> refine_on_sampled_points(Forward_search& search, std::vector<Rmls_surface*> found,
+                                                           const Indexed_points& sampled, const Vec3& p,
+                                                           const Scales& scales, const Projection_parameters& parameters,
+                                                           Point_index::Ranked_query& query,
+                                                           std::vector<std::size_t>& nearest)
 {
+  const std::size_t neighbors =
+    std::size_t(std::lround(double(scales.rmls_neighbors) * scales.sampled_fraction / scales.search_fraction));
   sampled.index.nearest_ranked(p, neighbors, query, nearest);
   search.local.clear();
   for(std::size_t j : nearest)
     search.local.push_back(sampled.points[j]);
   search.points_per_counted_point = scales.sampled_fraction / scales.search_fraction;
-  // The surfaces that `found` points to, which `search` owns, in the order of `found`.
-  std::vector<Rmls_surface*> set;
-  for(const Rmls_surface* f : found)
-    for(Rmls_surface& s : search.surfaces)
-      if(&s == f)
-        set.push_back(&s);
-  search.refine(set, scales.rmls_tolerance, surface_degree(scales, parameters), p);
-  return supported_surfaces(set);
+  search.refine(found, scales.rmls_tolerance, surface_degree(scales, parameters), p);
+  return supported_surfaces(found);
 }
 
 /// The centroid of the members of the surfaces `set[0..count)` other than `self`, weighted by
@@ -1072,13 +1067,11 @@ private:
     for(std::size_t j : m_neighbors)
       m_search.local.push_back(m_input.points[j]);
     m_search.points_per_counted_point = 1;
-    const std::vector<const Rmls_surface*> found = find_surfaces(m_search, p, m_scales, m_parameters);
-    if(found.empty() || !m_input.refinement)
-      return found;
-    const std::size_t sampled_neighbors = std::size_t(
-      std::lround(double(m_scales.rmls_neighbors) * m_scales.sampled_fraction / m_scales.search_fraction));
-    return refine_on_sampled_points(m_search, found, *m_input.refinement, sampled_neighbors, p, m_scales,
-                                    m_parameters, m_sampled_query, m_neighbors);
+    std::vector<Rmls_surface*> found = find_surfaces(m_search, p, m_scales, m_parameters);
+    if(!found.empty() && m_input.refinement)
+      found = refine_on_sampled_points(m_search, found, *m_input.refinement, p, m_scales, m_parameters,
+                                       m_sampled_query, m_neighbors);
+    return std::vector<const Rmls_surface*>(found.begin(), found.end());
   }
 
   // Under noise, the first two planes that the search around the candidate found, if parallel,
