@@ -57,7 +57,8 @@ struct Sharp_feature_scales
   /// represents (those nearer to it than to any other point kept). `spacing` and the
   /// neighbourhood sizes are those of the means, every other point takes the results of the
   /// mean that represents it, and stage 2 refines the surfaces that it finds on the means on
-  /// the sampled points. At most `sampled_fraction`.
+  /// the sampled points, which the patches then split (see `CGAL::segment_into_patches()`). At
+  /// most `sampled_fraction`.
   FT search_fraction = 1;
 };
 

@@ -38,6 +38,11 @@ namespace CGAL {
 /// unassigned. Two patches are adjacent along a curve when each
 /// holds most of the band points of one of its sides.
 ///
+/// Where the noise made stages 1 and 2 run on means (`Sharp_feature_scales::search_fraction`
+/// below 1), the sampled points that they are the means of are split, with the scales of the
+/// sampled points: a neighbourhood of the same radius holds `sampled_fraction /
+/// search_fraction` times the points, and the spacing is smaller by the square root of that.
+///
 /// The result depends on the points and the curves only: the same whatever the number of
 /// threads.
 ///

@@ -70,11 +70,18 @@ struct Vec3_as_point_map
   }
 };
 
-/// Points with their spatial index.
+/// Points with their spatial index, and the point that represents each input point.
 struct Indexed_points
 {
+  /// The points, in spatial order.
   std::vector<Vec3> points;
+  /// `position_of_input[j]` is the position in `points` of the point that represents input
+  /// point `j`: itself (its first copy), or the point that represents it after a thinning.
+  std::vector<std::size_t> position_of_input;
   Point_index index;
+
+  /// The number of input points, copies included.
+  std::size_t input_size() const { return position_of_input.size(); }
 };
 
 /// The distinct input points in double precision, in spatial (Hilbert curve) order, with their
@@ -89,18 +96,14 @@ struct Indexed_points
 /// The first copy in input order represents all of them; per-point outputs give every copy the
 /// value of its representative, so a cloud and the same cloud with its points repeated give the
 /// same curves.
-struct Indexed_input
+struct Indexed_input : Indexed_points
 {
-  /// The distinct points, in spatial order.
-  std::vector<Vec3> points;
   /// `input_index[i]` is the position in the input range of the first copy of `points[i]`.
   std::vector<std::size_t> input_index;
-  /// `position_of_input[j]` is the position in `points` of input point `j` (of its first copy).
-  std::vector<std::size_t> position_of_input;
-  Point_index index;
   /// When `points` are means (see `Sharp_feature_scales::search_fraction`): the points that
-  /// they are the means of, on which stage 2 refines the surfaces it found on the means;
-  /// null otherwise.
+  /// they are the means of, with the point that represents each input point among them; stage
+  /// 2 refines on them the surfaces it found on the means, and the patches are segmented on
+  /// them. Null otherwise.
   std::unique_ptr<Indexed_points> refinement;
 
   /// The number of input points, copies included.
@@ -316,6 +319,7 @@ bool thin_input(double fraction, Indexed_input& input, Kept_points kept_points =
     input.index.template build<ConcurrencyTag>(input.points);
     input.refinement.reset(new Indexed_points());
     input.refinement->points = std::move(all);
+    input.refinement->position_of_input = input.position_of_input;
     input.refinement->index.template build<ConcurrencyTag>(input.refinement->points);
   }
   for(std::size_t& position : input.position_of_input)
@@ -332,6 +336,31 @@ void sample_input(const Scales& scales, Indexed_input& input)
     thin_input<ConcurrencyTag>(scales.sampled_fraction, input);
   if(scales.search_fraction < scales.sampled_fraction)
     thin_input<ConcurrencyTag>(scales.search_fraction, input, Kept_points::means);
+}
+
+/// The number of sampled points that a mean represents, on average (see
+/// `Sharp_feature_scales::search_fraction`): `sampled_fraction / search_fraction`, 1 without means.
+template <typename Scales>
+double sampled_points_per_mean(const Scales& scales)
+{
+  return double(scales.sampled_fraction / scales.search_fraction);
+}
+
+/// The scales of the sampled points, from `scales`, which are those of their means (see
+/// `Sharp_feature_scales::search_fraction`): a neighbourhood of the same radius holds
+/// `sampled_points_per_mean()` times as many points, and the spacing is smaller by the square
+/// root of that (on a surface, the spacing goes as the inverse square root of the density).
+/// The noise and the other distances are those of the surfaces, whichever points sample them.
+template <typename Scales>
+Scales scales_of_sampled_points(const Scales& scales)
+{
+  const double per_mean = sampled_points_per_mean(scales);
+  Scales sampled = scales;
+  sampled.spacing = scales.spacing / std::sqrt(per_mean);
+  sampled.candidate_neighbors = std::size_t(std::lround(double(scales.candidate_neighbors) * per_mean));
+  sampled.rmls_neighbors = std::size_t(std::lround(double(scales.rmls_neighbors) * per_mean));
+  sampled.search_fraction = scales.sampled_fraction;
+  return sampled;
 }
 
 } // namespace internal

@@ -270,7 +270,7 @@ struct Clear_points
 /// they close the barrier between its two faces that the bands of its pieces leave open, which
 /// the regions would otherwise grow through. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool mark_creases_without_curve(const Indexed_input& input, const Scales& scales, Progress progress,
+bool mark_creases_without_curve(const Indexed_points& input, const Scales& scales, Progress progress,
                                 std::vector<Crease_side>& where)
 {
   if(scales.candidate_neighbors == 0 || !(scales.candidate_radius > 0))
@@ -299,7 +299,7 @@ bool mark_creases_without_curve(const Indexed_input& input, const Scales& scales
 /// is a region of its own; a face pinched by the bands of two curves stays one. Returns false
 /// if cancelled.
 template <typename ConcurrencyTag>
-bool grow_regions(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
+bool grow_regions(const Indexed_points& input, const Crease_landmarks& landmarks, const Scales& scales,
                   Progress progress, Patch_labels& labels, Clear_points& clear,
                   std::vector<std::vector<std::size_t>>& links)
 {
@@ -407,7 +407,7 @@ bool assign_band_points(const std::vector<Vec3>& points, const Crease_landmarks&
 /// The unit normal of the surface of region `label` around `x`: the least-squares plane of the
 /// points of that region among the `neighbors` nearest to `x`; false when they are fewer than
 /// `linked_neighbors` (too few to fit through the noise).
-inline bool region_normal_around(const Indexed_input& input, const std::vector<std::size_t>& label, std::size_t region,
+inline bool region_normal_around(const Indexed_points& input, const std::vector<std::size_t>& label, std::size_t region,
                                  const Vec3& x, std::size_t neighbors, std::vector<std::size_t>& scratch, Vec3& normal)
 {
   input.index.nearest(x, neighbors, scratch);
@@ -431,7 +431,7 @@ inline bool region_normal_around(const Indexed_input& input, const std::vector<s
 /// The normals are fitted over a stage-2 neighbourhood (`rmls_neighbors`), which the forward
 /// search found large enough to fit a surface through the noise. Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool join_regions_without_crease(const Indexed_input& input, const Crease_landmarks& landmarks, const Scales& scales,
+bool join_regions_without_crease(const Indexed_points& input, const Crease_landmarks& landmarks, const Scales& scales,
                                  const std::vector<std::vector<std::size_t>>& links, Progress progress,
                                  Patch_labels& labels)
 {
@@ -674,14 +674,23 @@ inline std::vector<Surface_patch<Working_traits>> fit_patches(const std::vector<
 }
 
 /// The patches of `input` bounded by the curves of `network` (see `segment_into_patches()`),
-/// with labels in input order. Returns false if cancelled.
+/// with labels in input order. Where `means_or_points` holds means (see
+/// `Sharp_feature_scales::search_fraction`), the sampled points that they are the means of are
+/// segmented: a mean of points from both sides of a crease lies on neither, and the means, fewer
+/// and smoothed, mark a crease that no curve marks less clearly, so that the regions grew
+/// through the gaps of the curves (fandisk at 1% noise, seeds 3 / 4 / 5: mean IoU 0.64 / 0.63 /
+/// 0.76 with 10 / 10 / 14 patches for 12 on the means, 0.83 / 0.82 / 0.83 with 14 / 15 / 14 on the
+/// sampled points). Returns false if cancelled.
 template <typename ConcurrencyTag>
-bool segment_patches(const Indexed_input& input, const Working_network& network, Progress progress,
+bool segment_patches(const Indexed_input& means_or_points, const Working_network& network, Progress progress,
                      Working_patches& out)
 {
+  const Indexed_points& input =
+    means_or_points.refinement ? *means_or_points.refinement : static_cast<const Indexed_points&>(means_or_points);
+  const Scales scales =
+    means_or_points.refinement ? scales_of_sampled_points(network.scales) : network.scales;
   out = Working_patches();
   out.labels.assign(input.input_size(), Working_patches::unassigned);
-  const Scales& scales = network.scales;
   if(input.points.empty() || !(scales.spacing > 0))
     return progress.report(1.);
   const Crease_landmarks landmarks(network);

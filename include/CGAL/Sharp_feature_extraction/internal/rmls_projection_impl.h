@@ -667,13 +667,11 @@ inline std::vector<Rmls_surface*> refine_on_sampled_points(Forward_search& searc
                                                            Point_index::Ranked_query& query,
                                                            std::vector<std::size_t>& nearest)
 {
-  const std::size_t neighbors =
-    std::size_t(std::lround(double(scales.rmls_neighbors) * scales.sampled_fraction / scales.search_fraction));
-  sampled.index.nearest_ranked(p, neighbors, query, nearest);
+  sampled.index.nearest_ranked(p, scales_of_sampled_points(scales).rmls_neighbors, query, nearest);
   search.local.clear();
   for(std::size_t j : nearest)
     search.local.push_back(sampled.points[j]);
-  search.points_per_counted_point = scales.sampled_fraction / scales.search_fraction;
+  search.points_per_counted_point = sampled_points_per_mean(scales);
   search.refine(found, scales.rmls_tolerance, surface_degree(scales, parameters), p);
   return supported_surfaces(found);
 }
