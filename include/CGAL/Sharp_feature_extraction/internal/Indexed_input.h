@@ -106,9 +106,6 @@ struct Indexed_input : Indexed_points
   /// them. Null otherwise.
   std::unique_ptr<Indexed_points> refinement;
 
-  /// The number of input points, copies included.
-  std::size_t input_size() const { return position_of_input.size(); }
-
   /// Every input point (copies included) whose position is one of `positions`, ascending.
   std::vector<std::size_t> input_indices(const std::vector<std::size_t>& positions) const
   {
