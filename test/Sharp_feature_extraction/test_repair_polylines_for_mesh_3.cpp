@@ -8,7 +8,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -156,4 +158,46 @@ TEST_CASE("two polylines crossing between their vertices are a problem, and the 
   CHECK(report.junction_splits == 2);
   CHECK(report.output_polylines == 4);
   CHECK(report.inserted_points > 0);
+}
+
+TEST_CASE("a polyline that goes on past a loop, along its own start, is cut where it touches itself, "
+          "not dropped",
+          "[mesh_3_polylines]")
+{
+  // One and a quarter turns of a spiral around a unit circle, drifting outwards by 0.6
+  // tolerances a turn: the last quarter runs within the tolerance of the first.
+  const double turns = 1.25, drift = 0.6 * tolerance;
+  const int n = static_cast<int>(std::ceil(2 * CGAL_PI * turns / step));
+  Polyline spiral;
+  for(int i = 0; i <= n; ++i) {
+    const double angle = 2 * CGAL_PI * turns * double(i) / n;
+    const double radius = 1 + drift * angle / (2 * CGAL_PI);
+    spiral.push_back(Point_3(radius * std::cos(angle), radius * std::sin(angle), 0));
+  }
+  std::vector<Polyline> polylines = {spiral};
+  const auto np = CGAL::parameters::threshold_distance(tolerance);
+  REQUIRE_FALSE(CGAL::find_mesh_3_polyline_problems(polylines, np).empty());
+  const CGAL::Mesh_3_polyline_repair_report report = CGAL::repair_polylines_for_mesh_3(polylines, np);
+  INFO(report.summary());
+  CHECK(CGAL::find_mesh_3_polyline_problems(polylines, np).empty());
+  CHECK(report.dropped_in_contact == 0);
+  CHECK(report.removed_in_contact > 0);
+  // Where the two passes overlap, one of them is cut (the ends that touch the other pass split
+  // it first): the pieces left cover the spiral within the tolerance, going around once, plus
+  // the short stretches of both passes that leave the points the pieces share (measured: 3%).
+  double length = 0;
+  for(const Polyline& p : polylines)
+    for(std::size_t i = 1; i < p.size(); ++i)
+      length += std::sqrt(CGAL::squared_distance(p[i - 1], p[i]));
+  CHECK(length >= 2 * CGAL_PI);
+  CHECK(length <= 1.05 * 2 * CGAL_PI);
+  std::size_t uncovered = 0;
+  for(const Point_3& q : spiral) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const Polyline& p : polylines)
+      for(const Point_3& r : p)
+        nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(q, r)));
+    uncovered += nearest > tolerance ? 1 : 0;
+  }
+  CHECK(uncovered == 0);
 }

@@ -1006,6 +1006,57 @@ TEST_CASE("stage 5: completion bridges a gap cut out of a straight crease into o
   CHECK(mesh_3_contract_violation(net) == "");
 }
 
+TEST_CASE("stage 5: two strands of one crease that overlap like shingles become one curve, without a corner",
+          "[stages][completion]")
+{
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const Vec n0(0, 0, 1), n1(0, 1, 0);
+  // The crease x in [0, 1], walked twice by stage 4: to x = 0.6, and from x = 0.5 on a third
+  // of a growth radius beside it. The end of each strand reaches the other's interior.
+  const double offset = net.scales.growth_radius / 3;
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), Vec(0.6, 0, 0), curve_step), n0, n1));
+  net.polylines.push_back(make_polyline(straight(Vec(0.5, offset, 0), Vec(1, offset, 0), curve_step), n0, n1));
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  CHECK(net.corners.empty());
+  REQUIRE(net.polylines.size() == 1);
+  const Polyline& p = net.polylines[0];
+  const double x0 = to_vec(p.points.front()).x, x1 = to_vec(p.points.back()).x;
+  CHECK(std::min(x0, x1) == Approx(0).margin(1e-12));
+  CHECK(std::max(x0, x1) == Approx(1).margin(1e-12));
+  // The two strands, and the step between them that the smoothing rounds off (its inflating
+  // step overshoots by a few percent).
+  CHECK(max_distance_to_segment(p, Vec(0, 0, 0), Vec(1, 0, 0)) <= 1.1 * offset);
+  // Once along the crease, not back and forth over the overlap.
+  for(std::size_t v = 1; v < p.points.size(); ++v)
+    CHECK((to_vec(p.points[v]).x - to_vec(p.points[v - 1]).x) * (x1 - x0) > 0);
+}
+
+TEST_CASE("stage 5: an end beside a parallel crease (the other edge of a narrow chamfer) is left as it is, "
+          "and neither curve is cut",
+          "[stages][completion]")
+{
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  // A 45-degree chamfer between the top (normal z) and the side (normal y), two thirds of a
+  // growth radius wide: its upper edge found up to x = 0.6, its lower edge along x in [0, 1].
+  const Vec top(0, 0, 1), side(0, 1, 0), chamfer = Vec(0, 1, 1) * (1 / std::sqrt(2.));
+  const double width = 2 * net.scales.growth_radius / 3;
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), Vec(0.6, 0, 0), curve_step), top, chamfer));
+  net.polylines.push_back(make_polyline(straight(Vec(0, width, -width), Vec(1, width, -width), curve_step), chamfer, side));
+  const std::vector<Polyline> before = net.polylines;
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  CHECK(net.corners.empty());
+  REQUIRE(net.polylines.size() == 2);
+  for(const Polyline& p : net.polylines)
+  {
+    const Polyline& original = p.points.size() == before[0].points.size() ? before[0] : before[1];
+    REQUIRE(p.points.size() == original.points.size());
+    CHECK(p.points.front() == original.points.front());
+    CHECK(p.points.back() == original.points.back());
+  }
+}
+
 TEST_CASE("stage 5: completion closes a circle with a cut gap into a loop repeating its first point",
           "[stages][completion]")
 {

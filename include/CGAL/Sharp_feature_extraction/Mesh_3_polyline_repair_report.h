@@ -38,8 +38,13 @@ struct Mesh_3_polyline_repair_report
   std::size_t dropped_short = 0;
   /// Polylines dropped because they ran along a longer one (near-duplicates).
   std::size_t dropped_duplicates = 0;
+  /// Points removed where a polyline still came closer than the tolerance to another one (or to
+  /// itself, far along it) without sharing a point there: they are cut out of one of the two
+  /// (the shorter; of a polyline touching itself, the pass nearer one of its ends), which the
+  /// other covers there within the tolerance.
+  std::size_t removed_in_contact = 0;
   /// Polylines dropped because they still came closer than the tolerance to another one
-  /// without sharing a point there (the last resort of the repair).
+  /// without sharing a point there after the cuts (the last resort of the repair).
   std::size_t dropped_in_contact = 0;
   /// Feature polylines whose normals did not match their points and were removed (the
   /// reconstruction only: plain polylines have no normals).
@@ -49,7 +54,7 @@ struct Mesh_3_polyline_repair_report
   bool changed() const
   {
     return removed_points + inserted_points + snapped_ends + closed_loops + junction_splits + sharp_turn_splits +
-             dropped_short + dropped_duplicates + dropped_in_contact + discarded_normals > 0;
+             dropped_short + dropped_duplicates + removed_in_contact + dropped_in_contact + discarded_normals > 0;
   }
 
   /// One line for people, listing the counts that are not zero.
@@ -62,7 +67,8 @@ struct Mesh_3_polyline_repair_report
       {"ends snapped", snapped_ends},               {"loops closed", closed_loops},
       {"junction splits", junction_splits},         {"sharp-turn splits", sharp_turn_splits},
       {"short polylines dropped", dropped_short},   {"duplicates dropped", dropped_duplicates},
-      {"polylines in contact dropped", dropped_in_contact}, {"normals discarded", discarded_normals}};
+      {"points in contact removed", removed_in_contact}, {"polylines in contact dropped", dropped_in_contact},
+      {"normals discarded", discarded_normals}};
     for(const auto& item : items)
       if(item.second > 0)
         out << ", " << item.second << " " << item.first;

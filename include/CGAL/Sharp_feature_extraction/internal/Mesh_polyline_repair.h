@@ -446,6 +446,54 @@ inline std::pair<std::size_t, std::size_t> conflicting_curves(const Mesh_3_polyl
   return std::make_pair(problem.polyline, problem.other_polyline);
 }
 
+/// Before the last resort: where a curve still comes closer than the tolerance to another one
+/// (or to itself, far along it) without sharing a point, the vertices in contact are cut out
+/// of one of the two, which the other covers there within the tolerance: out of the shorter
+/// curve, or of a curve touching itself, out of the pass nearer one of its ends (the tail
+/// that went on past a loop). The rest stays, in pieces, where the last resort would drop the
+/// whole curve. Counts the vertices removed in `report.removed_in_contact`.
+template <typename Curve, typename Point_3>
+void cut_out_contacts(std::vector<Curve>& curves, const std::vector<Unshared_contact>& contacts,
+                      Mesh_3_polyline_repair_report& report)
+{
+  std::vector<std::vector<bool>> cut(curves.size());
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    cut[c].assign(curves[c].points.size(), false);
+  for(const Unshared_contact& contact : contacts) {
+    bool in_a;
+    if(contact.a == contact.b) {
+      const std::vector<double> s = arc_lengths(curves[contact.a]);
+      auto to_end = [&](std::size_t i) { return (std::min)(s[i], s.back() - s[i]); };
+      in_a = to_end(contact.i) <= to_end(contact.j);
+    }
+    else
+      in_a = curve_length(curves[contact.a]) <= curve_length(curves[contact.b]);
+    if(in_a)
+      cut[contact.a][contact.i] = true;
+    else
+      cut[contact.b][contact.j] = true;
+  }
+  std::vector<Curve> result;
+  for(std::size_t c = 0; c < curves.size(); ++c) {
+    const bool with_normals = curves[c].normals.size() == curves[c].points.size();
+    Curve piece;
+    for(std::size_t i = 0; i <= curves[c].points.size(); ++i) {
+      if(i < curves[c].points.size() && !cut[c][i]) {
+        piece.points.push_back(curves[c].points[i]);
+        if(with_normals)
+          piece.normals.push_back(curves[c].normals[i]);
+        continue;
+      }
+      if(i < curves[c].points.size())
+        ++report.removed_in_contact;
+      if(piece.points.size() >= 2)
+        result.push_back(std::move(piece));
+      piece = Curve();
+    }
+  }
+  curves = std::move(result);
+}
+
 /// The last resort against curves Mesh_3 cannot protect: of the two curves of each conflict
 /// (an `Unshared_contact` or a `Mesh_3_polyline_problem`, see `conflicting_curves()`), the
 /// shorter is dropped, unless one of them is dropped already; a curve in conflict with itself
@@ -527,8 +575,10 @@ std::size_t count_closed_loops(const std::vector<Curve>& curves)
 /// (preferring an exactly shared end, then a point of `junction_hints`, such as the corners of
 /// the curve network); closes loops whose ends meet; splits curves where an end or another
 /// curve touches them; splits sharp turns; drops curves too short to mesh and curves that
-/// duplicate a longer one; last, drops the shorter of two curves that still come closer than
-/// the tolerance without sharing a point there (see `find_mesh_3_polyline_problems()`).
+/// duplicate a longer one; cuts the vertices where two curves still come closer than the
+/// tolerance without sharing a point out of one of them (see `cut_out_contacts()`); last,
+/// drops the shorter of two curves still in such contact (see
+/// `find_mesh_3_polyline_problems()`).
 /// Normals stay attached to their points (a curve whose normals do not match its points loses
 /// them).
 template <typename GeomTraits>
@@ -563,6 +613,20 @@ Mesh_3_polyline_repair_report repair_feature_polylines(std::vector<Feature_polyl
     drop_degenerate_and_short(curves, settings, report);
     if(find_contract_violations(curves, Contract_tolerances{tol, settings.maximum_angle}).empty())
       break;
+  }
+  // Contacts left (a crossing at a shallow angle, a curve that overlaps itself): cut out, and
+  // the new ends near the other curve join it as above. Each pass removes vertices; the passes
+  // after the first only see the contacts that the joins of the one before made, and the rare
+  // contact still left then is for the last resort below.
+  constexpr int contact_cut_passes = 3;
+  for(int pass = 0; pass < contact_cut_passes; ++pass) {
+    const std::vector<Unshared_contact> contacts = find_unshared_contacts<Curve, Point_3>(curves, tol);
+    if(contacts.empty())
+      break;
+    cut_out_contacts<Curve, Point_3>(curves, contacts, report);
+    snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
+    split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
+    drop_degenerate_and_short(curves, settings, report);
   }
   const std::size_t closed_after = count_closed_loops(curves);
   report.closed_loops = closed_after > closed_before ? closed_after - closed_before : 0;
