@@ -369,23 +369,22 @@ private:
     return direction.norm() > 0 && std::abs(direction.normalized().dot(tangent)) >= m_cos_aperture;
   }
 
-  /// Whether a vertex at `point` with the normal pair `normals` lies on the crease of the
-  /// vertices [first, last] of `c`: within a growth radius of their polyline (stage 4 gathers
-  /// the edge points of one crease within that radius, so two strands of it lie closer), with
-  /// the normal pair of the nearest of them (two parallel creases that close, such as the two
-  /// edges of a narrow chamfer, do not share both surfaces).
-  bool on_crease_of(const Working_polyline& c, std::size_t first, std::size_t last, const Vec3& point,
-                    const std::array<Vec3, 2>& normals) const
+  /// Whether a vertex at `point` with the normal pair `normals` lies on the crease of curve `c`:
+  /// within a growth radius of it (stage 4 gathers the edge points of one crease within that
+  /// radius, so two strands of it lie closer), with the normal pair of its nearest vertex (two
+  /// parallel creases that close, such as the two edges of a narrow chamfer, do not share both
+  /// surfaces).
+  bool on_crease_of(const Working_polyline& c, const Vec3& point, const std::array<Vec3, 2>& normals) const
   {
     double distance = std::numeric_limits<double>::infinity();
-    std::size_t nearest = first;
-    for(std::size_t k = first; k <= last; ++k)
+    std::size_t nearest = 0;
+    for(std::size_t k = 0; k < c.points.size(); ++k)
     {
       const double to_vertex = (point - c.points[k]).norm();
       if(to_vertex < (point - c.points[nearest]).norm())
         nearest = k;
       distance = (std::min)(distance, to_vertex);
-      if(k < last)
+      if(k + 1 < c.points.size())
       {
         const Vec3 segment = c.points[k + 1] - c.points[k];
         const double t = segment.squaredNorm() > 0 ? (point - c.points[k]).dot(segment) / segment.squaredNorm() : 0;
@@ -398,12 +397,12 @@ private:
   }
 
   // The end (`c`, `back`) reached vertex `v` of curve `d` (possibly `c` itself), along which it
-  // runs. On its own curve, the stretch behind `v` (on the end's side) up to the other end went
-  // once around a loop and on beside the curve's start: it is dropped and the loop closes (or,
-  // if the other end is at a corner, the end joins that corner). On another curve, if that stretch, up to a free end of `d`, lies on the
-  // crease of the end's curve, the two are strands of one crease that overlap like shingles:
-  // it is dropped and the end joins the rest of `d`. Otherwise nothing changes (the end is left
-  // as it is) and the result is false.
+  // runs. On its own curve, the stretch behind `v` (on the end's side), up to the other end,
+  // went once around a loop and on beside the curve's start: it is dropped and the loop closes
+  // (or, if the other end is at a corner, the end joins that corner). On another curve, if that
+  // stretch, up to a free end of `d`, lies on the crease of the end's curve, the two are strands
+  // of one crease that overlap like shingles: it is dropped and the end joins the rest of `d`.
+  // Otherwise nothing changes (the end is left as it is) and the result is false.
   bool merge_overlapping_strands(std::size_t c, bool back, std::size_t d, std::size_t v, const Vec3& tangent)
   {
     Working_polyline& strand = m_net.polylines[d];
@@ -417,17 +416,16 @@ private:
     const std::size_t behind_corner = behind_is_front ? strand.front_corner : strand.back_corner;
     if(d == c && behind_corner != no_index)
     {
-      // The loop went around to a corner at its other end: it closes there.
       attach_to_corner(c, back, behind_corner);
       return true;
     }
-    if(behind_is_front ? (v == 0 || behind_corner != no_index) : (v + 1 == n || behind_corner != no_index))
+    if(behind_corner != no_index || (behind_is_front ? v == 0 : v + 1 == n))
       return false;
     const std::size_t first = behind_is_front ? 0 : v + 1, last = behind_is_front ? v - 1 : n - 1;
-    const Working_polyline& curve = m_net.polylines[c];
-    for(std::size_t k = first; k <= last && d != c; ++k)
-      if(!on_crease_of(curve, 0, curve.points.size() - 1, strand.points[k], strand.normals[k]))
-        return false;
+    if(d != c)
+      for(std::size_t k = first; k <= last; ++k)
+        if(!on_crease_of(m_net.polylines[c], strand.points[k], strand.normals[k]))
+          return false;
     strand.points.erase(strand.points.begin() + std::ptrdiff_t(first), strand.points.begin() + std::ptrdiff_t(last + 1));
     strand.normals.erase(strand.normals.begin() + std::ptrdiff_t(first), strand.normals.begin() + std::ptrdiff_t(last + 1));
     if(d == c)
