@@ -452,22 +452,25 @@ inline std::pair<std::size_t, std::size_t> conflicting_curves(const Mesh_3_polyl
 /// curve, or of a curve touching itself, out of the pass nearer one of its ends (the tail
 /// that went on past a loop). The rest stays, in pieces, where the last resort would drop the
 /// whole curve. Counts the vertices removed in `report.removed_in_contact`.
-template <typename Curve, typename Point_3>
+template <typename Curve>
 void cut_out_contacts(std::vector<Curve>& curves, const std::vector<Unshared_contact>& contacts,
                       Mesh_3_polyline_repair_report& report)
 {
-  std::vector<std::vector<bool>> cut(curves.size());
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    cut[c].assign(curves[c].points.size(), false);
+  std::vector<std::vector<double>> arcs;
+  std::vector<std::vector<bool>> cut;
+  for(const Curve& c : curves) {
+    arcs.push_back(arc_lengths(c));
+    cut.emplace_back(c.points.size(), false);
+  }
   for(const Unshared_contact& contact : contacts) {
     bool in_a;
     if(contact.a == contact.b) {
-      const std::vector<double> s = arc_lengths(curves[contact.a]);
+      const std::vector<double>& s = arcs[contact.a];
       auto to_end = [&](std::size_t i) { return (std::min)(s[i], s.back() - s[i]); };
       in_a = to_end(contact.i) <= to_end(contact.j);
     }
     else
-      in_a = curve_length(curves[contact.a]) <= curve_length(curves[contact.b]);
+      in_a = arcs[contact.a].back() <= arcs[contact.b].back();
     if(in_a)
       cut[contact.a][contact.i] = true;
     else
@@ -477,19 +480,22 @@ void cut_out_contacts(std::vector<Curve>& curves, const std::vector<Unshared_con
   for(std::size_t c = 0; c < curves.size(); ++c) {
     const bool with_normals = curves[c].normals.size() == curves[c].points.size();
     Curve piece;
-    for(std::size_t i = 0; i <= curves[c].points.size(); ++i) {
-      if(i < curves[c].points.size() && !cut[c][i]) {
-        piece.points.push_back(curves[c].points[i]);
-        if(with_normals)
-          piece.normals.push_back(curves[c].normals[i]);
-        continue;
-      }
-      if(i < curves[c].points.size())
-        ++report.removed_in_contact;
+    auto end_piece = [&]() {
       if(piece.points.size() >= 2)
         result.push_back(std::move(piece));
       piece = Curve();
+    };
+    for(std::size_t i = 0; i < curves[c].points.size(); ++i) {
+      if(cut[c][i]) {
+        ++report.removed_in_contact;
+        end_piece();
+        continue;
+      }
+      piece.points.push_back(curves[c].points[i]);
+      if(with_normals)
+        piece.normals.push_back(curves[c].normals[i]);
     }
+    end_piece();
   }
   curves = std::move(result);
 }
@@ -623,7 +629,7 @@ Mesh_3_polyline_repair_report repair_feature_polylines(std::vector<Feature_polyl
     const std::vector<Unshared_contact> contacts = find_unshared_contacts<Curve, Point_3>(curves, tol);
     if(contacts.empty())
       break;
-    cut_out_contacts<Curve, Point_3>(curves, contacts, report);
+    cut_out_contacts(curves, contacts, report);
     snap_ends<Curve, Point_3>(curves, junction_hints, tol, report);
     split_at_ends_touching_interiors<Curve, Point_3>(curves, tol, report);
     drop_degenerate_and_short(curves, settings, report);

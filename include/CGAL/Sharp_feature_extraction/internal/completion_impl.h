@@ -376,13 +376,16 @@ private:
   /// surfaces).
   bool on_crease_of(const Working_polyline& c, const Vec3& point, const std::array<Vec3, 2>& normals) const
   {
-    double distance = std::numeric_limits<double>::infinity();
+    double distance = std::numeric_limits<double>::infinity(), to_nearest_vertex = distance;
     std::size_t nearest = 0;
     for(std::size_t k = 0; k < c.points.size(); ++k)
     {
       const double to_vertex = (point - c.points[k]).norm();
-      if(to_vertex < (point - c.points[nearest]).norm())
+      if(to_vertex < to_nearest_vertex)
+      {
+        to_nearest_vertex = to_vertex;
         nearest = k;
+      }
       distance = (std::min)(distance, to_vertex);
       if(k + 1 < c.points.size())
       {
