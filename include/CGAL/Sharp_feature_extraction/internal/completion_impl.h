@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -85,6 +86,25 @@ inline bool turns_sharply(const Working_polyline& c, std::size_t v)
   const Vec3 a = c.points[v] - c.points[v - 1], b = c.points[v + 1] - c.points[v];
   return a.norm() > 0 && b.norm() > 0
          && a.normalized().dot(b.normalized()) < std::cos(radians(Completion_constants::sharp_turn_angle));
+}
+
+/// Whether the sharp turn of curve `c` at its interior vertex `v` is a spike: the segments
+/// before and after the turn, and the chord that skips `v`, all run the same way (within
+/// `Completion_constants::sharp_turn_angle` of each other). The curve leaves its line at `v`
+/// alone and returns to it: `v` is an edge point that stage 4 took from the noise beside the
+/// crease, not a corner. A corner turns for good, and a short zigzag between two corners (the
+/// top edge of a gear tooth) leaves in the opposite direction. Needs two vertices on each side.
+inline bool is_spike(const Working_polyline& c, std::size_t v)
+{
+  if(v < 2 || v + 2 >= c.points.size())
+    return false;
+  const Vec3 before = c.points[v - 1] - c.points[v - 2], after = c.points[v + 2] - c.points[v + 1],
+             chord = c.points[v + 1] - c.points[v - 1];
+  const double cos_sharp = std::cos(radians(Completion_constants::sharp_turn_angle));
+  auto same_way = [cos_sharp](const Vec3& a, const Vec3& b) {
+    return a.norm() > 0 && b.norm() > 0 && a.normalized().dot(b.normalized()) > cos_sharp;
+  };
+  return same_way(before, after) && same_way(before, chord) && same_way(chord, after);
 }
 
 /// The least-squares line through `points` (at least two): their centroid and unit principal
@@ -714,7 +734,8 @@ private:
     }
   }
 
-  // Mesh_3 rounds off turns inside a polyline: split sharp turns into two curves at a corner.
+  // Mesh_3 rounds off turns inside a polyline: split sharp turns into two curves at a corner,
+  // except spikes (see `is_spike()`), whose vertex is dropped.
   void split_sharp_turns()
   {
     for(std::size_t c = 0; c < m_net.polylines.size();)
@@ -722,15 +743,22 @@ private:
         ++c;
   }
 
-  // Splits curve `c` at its first sharp turn; the pieces are examined again (the tail is
-  // appended to the list, a reopened loop keeps its index).
+  // Splits curve `c` at its first sharp turn, or drops the vertex of a spike there; the pieces
+  // (or the curve) are examined again (the tail is appended to the list, a reopened loop keeps
+  // its index).
   bool split_first_sharp_turn(std::size_t c)
   {
-    const Working_polyline& curve = m_net.polylines[c];
+    Working_polyline& curve = m_net.polylines[c];
     for(std::size_t v = 1; v + 1 < curve.points.size(); ++v)
     {
       if(turns_sharply(curve, v))
       {
+        if(is_spike(curve, v))
+        {
+          curve.points.erase(curve.points.begin() + std::ptrdiff_t(v));
+          curve.normals.erase(curve.normals.begin() + std::ptrdiff_t(v));
+          return true;
+        }
         const std::size_t corner = add_corner(curve.points[v], curve.normals[v]);
         split_at(c, v, corner);
         return true;
