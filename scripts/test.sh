@@ -25,7 +25,11 @@ case "${1:-}" in
   --assertions|--sanitize) mode="${1#--}"; shift ;;
 esac
 
-build_options=(-DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=ON -DSFE_BUILD_BENCHMARK=OFF -DSFE_TESTS_AS_ONE_PROGRAM=OFF)
+# Every test program instantiates the whole pipeline, so each one costs its own compile: the
+# test files that, together, run every stage, reader, writer, kernel and execution tag of the
+# library (SFE_COVERING_TESTS in test/Sharp_feature_extraction/CMakeLists.txt) are built as one
+# program of one translation unit, test_covering, which compiles the pipeline once.
+build_options=(-DSFE_BUILD_EXAMPLES=ON -DSFE_BUILD_TESTS=ON -DSFE_BUILD_BENCHMARK=OFF -DSFE_TESTS_AS_ONE_PROGRAM=ON)
 case "$mode" in
   release)
     build_options+=(-DSFE_BUILD_MESHING=ON)
@@ -52,17 +56,13 @@ case "$mode" in
     # Hence -O1 and -g1 (line tables only: the reports keep file and line).
     # The Mesh_3 tests are left out (one translation unit of ~3.6 GB and minutes), and so
     # are the examples (no test runs them; the Release run builds them).
-    # Every test program instantiates the whole pipeline, so each one costs its own compile
-    # (about 290 s of CPU here): the test files that, together, run every stage, reader, writer,
-    # kernel and execution tag of the library (SFE_COVERING_TESTS in
-    # test/Sharp_feature_extraction/CMakeLists.txt) are built as one program of one translation
-    # unit, test_covering, which compiles the pipeline once. test_extract_sharp_features is
-    # left out: it checks the accuracy of the default call on analytic shapes, the same code
-    # that test_stages and test_kernels_and_determinism run on the cube, the capped cylinder
-    # and the boxes, exact and noisy, and test_bad_input on planes and degenerate clouds; under
-    # the sanitizers it takes 205 s of CPU to run, besides its compile.
+    # Only test_covering is built and run (each program's compile costs about 290 s of CPU
+    # here). test_extract_sharp_features is left out: it checks the accuracy of the default
+    # call on analytic shapes, the same code that test_stages and test_kernels_and_determinism
+    # run on the cube, the capped cylinder and the boxes, exact and noisy, and test_bad_input
+    # on planes and degenerate clouds; under the sanitizers it takes 205 s of CPU to run,
+    # besides its compile.
     sanitized_programs=(test_covering)
-    build_options+=(-DSFE_TESTS_AS_ONE_PROGRAM=ON)
     sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
     build_options+=(-DSFE_BUILD_EXAMPLES=OFF -DSFE_BUILD_MESHING=OFF -DSFE_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=Sanitize
                     "-DCMAKE_CXX_FLAGS_SANITIZE=-O1 -g1 $sanitizers"
