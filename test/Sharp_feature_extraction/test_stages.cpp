@@ -1230,19 +1230,24 @@ TEST_CASE("stage 5: a curve ending at a sharp turn is split there so that Mesh_3
 TEST_CASE("stage 5: a spike (one vertex beside a straight crease) is dropped, not split into a corner",
           "[stages][completion]")
 {
-  CGAL::Feature_curve_network<K> net = synthetic_network();
-  // The crease x in [0, 1], one vertex of which stage 4 took from the noise a growth radius
-  // beside it: the curve turns by about 110 degrees there and back.
-  std::vector<Vec> line = straight(Vec(0, 0, 0), Vec(1, 0, 0), curve_step);
-  const std::size_t spike = line.size() / 2;
-  line[spike] = line[spike] + Vec(0, net.scales.growth_radius, 0);
-  net.polylines.push_back(make_polyline(line, Vec(0, 0, 1), Vec(0, 1, 0)));
-  CGAL::complete_feature_polylines(net);
-  CHECK(mesh_3_contract_violation(net) == "");
-  CHECK(net.corners.empty());
-  REQUIRE(net.polylines.size() == 1);
-  const Polyline& p = net.polylines[0];
-  CHECK(p.points.size() == line.size() - 1);
-  // The smoothing moved nothing off the line once the spike was gone.
-  CHECK(max_distance_to_segment(p, Vec(0, 0, 0), Vec(1, 0, 0)) <= 1e-12);
+  // The crease x in [0, 1], one vertex of which stage 4 took from the noise beside it: one
+  // growth radius away, the curve turns by about 110 degrees there and back; three, it also
+  // turns by about 75 degrees one vertex before.
+  for(double growth_radii : {1., 3.})
+  {
+    INFO("spike " << growth_radii << " growth radii off the crease");
+    CGAL::Feature_curve_network<K> net = synthetic_network();
+    std::vector<Vec> line = straight(Vec(0, 0, 0), Vec(1, 0, 0), curve_step);
+    const std::size_t spike = line.size() / 2;
+    line[spike] = line[spike] + Vec(0, growth_radii * net.scales.growth_radius, 0);
+    net.polylines.push_back(make_polyline(line, Vec(0, 0, 1), Vec(0, 1, 0)));
+    CGAL::complete_feature_polylines(net);
+    CHECK(mesh_3_contract_violation(net) == "");
+    CHECK(net.corners.empty());
+    REQUIRE(net.polylines.size() == 1);
+    const Polyline& p = net.polylines[0];
+    CHECK(p.points.size() == line.size() - 1);
+    // The smoothing moved nothing off the line once the spike was gone.
+    CHECK(max_distance_to_segment(p, Vec(0, 0, 0), Vec(1, 0, 0)) <= 1e-12);
+  }
 }

@@ -753,12 +753,14 @@ private:
     {
       if(turns_sharply(curve, v))
       {
-        if(is_spike(curve, v))
-        {
-          curve.points.erase(curve.points.begin() + std::ptrdiff_t(v));
-          curve.normals.erase(curve.normals.begin() + std::ptrdiff_t(v));
-          return true;
-        }
+        // The turn towards a spike far off the line is sharp too, one vertex before it.
+        for(std::size_t spike : {v, v + 1})
+          if(spike + 1 < curve.points.size() && turns_sharply(curve, spike) && is_spike(curve, spike))
+          {
+            curve.points.erase(curve.points.begin() + std::ptrdiff_t(spike));
+            curve.normals.erase(curve.normals.begin() + std::ptrdiff_t(spike));
+            return true;
+          }
         const std::size_t corner = add_corner(curve.points[v], curve.normals[v]);
         split_at(c, v, corner);
         return true;
