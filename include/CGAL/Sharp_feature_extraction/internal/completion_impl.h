@@ -755,7 +755,7 @@ private:
       {
         // The turn towards a spike far off the line is sharp too, one vertex before it.
         for(std::size_t spike : {v, v + 1})
-          if(spike + 1 < curve.points.size() && turns_sharply(curve, spike) && is_spike(curve, spike))
+          if(is_spike(curve, spike) && turns_sharply(curve, spike))
           {
             curve.points.erase(curve.points.begin() + std::ptrdiff_t(spike));
             curve.normals.erase(curve.normals.begin() + std::ptrdiff_t(spike));
