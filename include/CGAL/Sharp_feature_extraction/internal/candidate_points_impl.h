@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -63,6 +64,22 @@ constexpr double noise_ratio_for_growth = 0.25;
 /// 1% dB 0.779 -> 0.768 on the 9 parts) and keep growing with the noise where the narrow
 /// estimate saturates (0.47 to 0.65 of the true noise at 2% dB).
 constexpr double widened_noise_ratio_for_growth = 0.3;
+/// The two ratios above were chosen on the spacing in space, which the noise inflates: the
+/// distance to the 6th neighbour of a point in a noise band adds their offsets along the
+/// normal. The inflation grows with the noise-to-spacing ratio, and so with the density at a
+/// fixed noise, so that neighbourhoods grown on it shrink as the density grows: at 500k points
+/// and 0.5% dB noise the stage-1 radius was 0.66 of that at 100k on CGAL's pinion, whose tooth
+/// creases were then lost (F1 0.960 at 100k, 0.871 at 500k). The inflation is therefore capped
+/// at this factor: the spacing the neighbourhoods grow on is at most this many times the
+/// spacing in the tangent plane (`Scale_samples::tangent_spacing`), which the noise does not
+/// inflate. Over the 9 benchmark parts at 100k points, where the ratios were chosen, the
+/// inflation was 1.19 to 1.31 at 0.5% dB noise (unchanged by the cap) and 1.48 to 1.50 at 1%.
+/// Uncapped, with the ratios taken against 1.35 tangent spacings, the neighbourhoods of sparse
+/// clouds shrank instead (a cube of 30k points at 1% dB noise: 59 -> 43 points, 12 -> 14 to 18
+/// curves). Mean F1 on the 9 parts (eps 0.5% dB), before -> after: 0.5% noise 500k points
+/// 0.968 -> 0.980 (pinion 0.871 -> 0.949), 100k identical (seeds 1, 2); 1% noise 500k 0.831 ->
+/// 0.848, 100k 0.826 -> 0.822 and 0.821 -> 0.814; 2% noise 100k at eps 1% dB 0.534 -> 0.563.
+constexpr double maximum_spacing_inflation = 1.35;
 /// The noise is measured over neighbourhoods at least this many noise scales wide. Once the
 /// noise spans about a spacing, the 36 nearest points of a point lie inside its slab of the
 /// noise band, and their jet follows the noise: that estimate fell to 0.75 of the true RMS of
@@ -118,16 +135,13 @@ struct Local_fit_statistics
   double rms_residual = 0;
 };
 
-/// Jet fit of `points[neighbors]` over its principal plane: the paper's residual r(p) (largest
-/// distance to the fit along the plane normal) and the RMS residual.
+/// Jet fit of `points[neighbors]` over `frame`: the paper's residual r(p) (largest distance to
+/// the fit along the frame normal) and the RMS residual.
 template <typename IndexRange>
-Local_fit_statistics fit_residuals(const std::vector<Vec3>& points, const IndexRange& neighbors, int degree)
+Local_fit_statistics fit_residuals(const std::vector<Vec3>& points, const IndexRange& neighbors,
+                                   const Local_frame& frame, int degree)
 {
   Local_fit_statistics stats;
-  Local_frame frame;
-  Vec3 spread;
-  if(!principal_frame(points, neighbors, frame, spread))
-    return stats;
   Height_field fit;
   if(!fit.fit(points, neighbors, frame, degree))
     return stats;
@@ -144,6 +158,32 @@ Local_fit_statistics fit_residuals(const std::vector<Vec3>& points, const IndexR
   return stats;
 }
 
+/// The same over the principal plane of `points[neighbors]`.
+template <typename IndexRange>
+Local_fit_statistics fit_residuals(const std::vector<Vec3>& points, const IndexRange& neighbors, int degree)
+{
+  Local_frame frame;
+  Vec3 spread;
+  if(!principal_frame(points, neighbors, frame, spread))
+    return Local_fit_statistics();
+  return fit_residuals(points, neighbors, frame, degree);
+}
+
+/// Distance from `p` to the `rank`-th nearest of `points[neighbors]` (0 being the nearest) in
+/// the plane of `frame`, the heights along its normal left out; `distances` is a workspace.
+inline double tangent_distance(const std::vector<Vec3>& points, const Vec3& p, const std::vector<std::size_t>& neighbors,
+                               const Local_frame& frame, std::size_t rank, std::vector<double>& distances)
+{
+  distances.clear();
+  for(std::size_t j : neighbors)
+  {
+    const Vec3 d = points[j] - p;
+    distances.push_back(std::hypot(d.dot(frame.u), d.dot(frame.v)));
+  }
+  std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(rank), distances.end());
+  return distances[rank];
+}
+
 /// The value at `fraction` (in [0, 1)) of the sorted `values`; 0 if there is none.
 inline double quantile(std::vector<double> values, double fraction)
 {
@@ -156,6 +196,20 @@ inline double quantile(std::vector<double> values, double fraction)
 
 inline double median(std::vector<double> values) { return quantile(std::move(values), 0.5); }
 
+/// The mean of the finite `values`; 0 if there is none.
+inline double finite_mean(const std::vector<double>& values)
+{
+  double sum = 0;
+  std::size_t count = 0;
+  for(double d : values)
+    if(std::isfinite(d))
+    {
+      sum += d;
+      ++count;
+    }
+  return count > 0 ? sum / double(count) : 0.;
+}
+
 /// The measurements of the regular subsample (regular in the spatial order of the points)
 /// from which the scales are derived, one value per sample.
 struct Scale_samples
@@ -163,6 +217,9 @@ struct Scale_samples
   std::size_t stride = 1;
   /// Distance to the `spacing_neighbor`-th neighbour.
   std::vector<double> spacing;
+  /// The same in the tangent plane (of the jet fit below): noise along the normal inflates the
+  /// distances in space, the more so the denser the cloud, but not these.
+  std::vector<double> tangent_spacing;
   /// RMS residual of the jet fitted to the `base_candidate_neighbors` nearest points.
   std::vector<double> rms_residual;
   /// Distances to the `candidate_neighbors`-th and `rmls_neighbors`-th neighbours.
@@ -179,21 +236,32 @@ bool measure_samples(const std::vector<Vec3>& points, const Point_index& index, 
   const std::size_t n = points.size();
   samples.stride = (std::max<std::size_t>)(1, n / scale_sample_size);
   const std::size_t count = (n + samples.stride - 1) / samples.stride;
-  for(std::vector<double>* v : {&samples.spacing, &samples.rms_residual, &samples.candidate_radius, &samples.rmls_radius})
+  for(std::vector<double>* v :
+      {&samples.spacing, &samples.tangent_spacing, &samples.rms_residual, &samples.candidate_radius, &samples.rmls_radius})
     v->assign(count, 0.);
   const std::size_t fit_size = (std::min)(base_candidate_neighbors, n);
   const std::size_t searched = (std::min)(rmls_neighbors_per_candidate_neighbors * base_candidate_neighbors, n);
   return parallel_blocks<ConcurrencyTag>(count, progress, [&](std::size_t first, std::size_t last) {
-    std::vector<std::size_t> neighbors;
+    std::vector<std::size_t> neighbors, fitted;
+    std::vector<double> distances;
     for(std::size_t s = first; s < last; ++s)
     {
       const Vec3& p = points[s * samples.stride];
       index.nearest(p, searched, neighbors);
-      samples.spacing[s] = (points[neighbors[(std::min)(spacing_neighbor, neighbors.size() - 1)]] - p).norm();
+      const std::size_t spacing_rank = (std::min)(spacing_neighbor, neighbors.size() - 1);
+      samples.spacing[s] = (points[neighbors[spacing_rank]] - p).norm();
       samples.candidate_radius[s] = (points[neighbors[fit_size - 1]] - p).norm();
       samples.rmls_radius[s] = (points[neighbors.back()] - p).norm();
-      neighbors.resize(fit_size);
-      samples.rms_residual[s] = fit_residuals(points, neighbors, degree).rms_residual;
+      fitted.assign(neighbors.begin(), neighbors.begin() + std::ptrdiff_t(fit_size));
+      Local_frame frame;
+      Vec3 spread;
+      if(!principal_frame(points, fitted, frame, spread))
+      {
+        samples.tangent_spacing[s] = samples.spacing[s];
+        continue;
+      }
+      samples.tangent_spacing[s] = tangent_distance(points, p, neighbors, frame, spacing_rank, distances);
+      samples.rms_residual[s] = fit_residuals(points, fitted, frame, degree).rms_residual;
     }
   });
 }
@@ -261,13 +329,16 @@ bool measure_radii(const std::vector<Vec3>& points, const Point_index& index, co
 
 /// The automatic stage-1 neighbourhood size: grown with the square of the noise-to-spacing
 /// ratio (above `noise_ratio_for_growth` for `narrow_noise`, the noise over the 36 nearest
-/// points, and above `widened_noise_ratio_for_growth` for `scales.noise`) so that fits average
-/// the noise out.
-inline double noise_grown_candidate_neighbors(double narrow_noise, const Scales& scales)
+/// points, and above `widened_noise_ratio_for_growth` for `noise`, the widened estimate) so
+/// that fits average the noise out. The spacing is `spacing`, at most
+/// `maximum_spacing_inflation` times `tangent_spacing` (see there; 0 when unknown).
+inline double noise_grown_candidate_neighbors(double narrow_noise, double noise, double spacing, double tangent_spacing)
 {
+  const double growth_spacing = tangent_spacing > 0
+    ? (std::min)(spacing, maximum_spacing_inflation * tangent_spacing) : spacing;
   // The noise-to-spacing ratio in units of its growth threshold, the larger of the two estimates'.
-  const double ratio_over_threshold = (std::max)(narrow_noise / noise_ratio_for_growth,
-                                                 scales.noise / widened_noise_ratio_for_growth) / scales.spacing;
+  const double ratio_over_threshold =
+    (std::max)(narrow_noise / noise_ratio_for_growth, noise / widened_noise_ratio_for_growth) / growth_spacing;
   return double(base_candidate_neighbors) * (std::max)(1., ratio_over_threshold * ratio_over_threshold);
 }
 
@@ -316,17 +387,7 @@ bool measure_spacing_and_noise(const std::vector<Vec3>& points, const Point_inde
   // A distance between points more than about 1e154 apart overflows to infinity (its square
   // does): a far outlier among ordinary coordinates. It says nothing of the sampling, so its
   // samples are left out; a cloud that has no other is refused like one without extent.
-  double spacing_sum = 0;
-  std::size_t finite_spacings = 0;
-  for(double d : samples.spacing)
-    if(std::isfinite(d))
-    {
-      spacing_sum += d;
-      ++finite_spacings;
-    }
-  if(finite_spacings == 0)
-    return false;
-  scales.spacing = spacing_sum / double(finite_spacings);
+  scales.spacing = finite_mean(samples.spacing);
   if(!(scales.spacing > 0))
     return false;
   const double narrow_noise = median(samples.rms_residual);
@@ -336,7 +397,8 @@ bool measure_spacing_and_noise(const std::vector<Vec3>& points, const Point_inde
                                            median(samples.candidate_radius), samples, progress.sub(samples_share, 1),
                                            scales))
     return false;
-  grown_candidate_neighbors = noise_grown_candidate_neighbors(narrow_noise, scales);
+  grown_candidate_neighbors = noise_grown_candidate_neighbors(narrow_noise, scales.noise, scales.spacing,
+                                                              finite_mean(samples.tangent_spacing));
   return true;
 }
 
