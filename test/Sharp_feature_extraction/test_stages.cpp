@@ -1281,3 +1281,98 @@ TEST_CASE("stage 5: a spike (one vertex beside a straight crease) is dropped, no
     CHECK(max_distance_to_segment(p, Vec(0, 0, 0), Vec(1, 0, 0)) <= 1e-12);
   }
 }
+
+namespace {
+
+/// Four straight curves that end at one corner `merged` of valence 4, each from `far_length`
+/// away along `directions[i]` (unit) to `ends[i]`, then to `merged`; curve i lies between the
+/// surfaces `normals[i]`.
+CGAL::Feature_curve_network<K> curves_into_one_corner(const std::array<Vec, 4>& ends,
+                                                       const std::array<Vec, 4>& directions,
+                                                       const std::array<std::array<Vec, 2>, 4>& normals,
+                                                       const Vec& merged)
+{
+  constexpr double far_length = 0.5;
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  CGAL::Feature_corner<K> corner{Point_3(merged.x, merged.y, merged.z), {}, {}};
+  for(std::size_t i = 0; i < 4; ++i)
+  {
+    std::vector<Vec> points = straight(ends[i] + directions[i] * far_length, ends[i], curve_step);
+    if(distance(ends[i], merged) > 0)
+      points.push_back(merged);
+    net.polylines.push_back(make_polyline(points, normals[i][0], normals[i][1]));
+    net.polylines.back().back_corner = 0;
+    corner.incident_polylines.push_back(i);
+  }
+  net.corners.push_back(corner);
+  return net;
+}
+
+} // namespace
+
+TEST_CASE("stage 5: two corners a growth radius apart, merged into one of valence 4, are split and joined by their crease",
+          "[stages][completion]")
+{
+  // The end face (z = 0) of a gear tooth whose top edge, from A to B, is one growth radius
+  // long (CGAL's pinion at 0.5% noise): stages 2 to 4 bring the two long edges along z and
+  // the two flank profiles to one corner between A and B, and the top edge is missing.
+  const double top_edge = synthetic_network().scales.growth_radius;
+  const Vec a(0, 0, 0), b(top_edge, 0, 0), z(0, 0, 1);
+  const Vec end_face(0, 0, -1), top(0, 1, 0), flank_a = normalized(Vec(-1, 1, 0)), flank_b = normalized(Vec(1, 1, 0));
+  const Vec profile_a = normalized(Vec(-1, -1, 0)), profile_b = normalized(Vec(1, -1, 0));
+  // The straight parts stop a step short of the true corners; their last segments bend to the
+  // merged corner by less than the sharp-turn angle.
+  CGAL::Feature_curve_network<K> net = curves_into_one_corner(
+      {{a + z * curve_step, b + z * curve_step, a + profile_a * curve_step, b + profile_b * curve_step}},
+      {{z, z, profile_a, profile_b}},
+      {{{{flank_a, top}}, {{top, flank_b}}, {{end_face, flank_a}}, {{end_face, flank_b}}}}, (a + b) * 0.5);
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  REQUIRE(net.corners.size() == 2);
+  REQUIRE(net.polylines.size() == 5);
+  for(const auto& corner : net.corners)
+  {
+    const Vec c = to_vec(corner.point);
+    INFO("corner at " << c.x << " " << c.y << " " << c.z);
+    CHECK(corner.incident_polylines.size() == 3);
+    CHECK(std::min(distance(c, a), distance(c, b)) <= completion_corner_tolerance);
+    CHECK(corner.normals.size() == 3);
+  }
+  CHECK(distance(to_vec(net.corners[0].point), to_vec(net.corners[1].point)) >= 0.9 * top_edge);
+  // The new curve is the top edge, between the end face and the top (normals within 1 degree).
+  const double link_normal_cos = std::cos(pi / 180);
+  std::size_t links = 0;
+  for(const Polyline& p : net.polylines)
+    if(p.front_corner != Polyline::no_corner && p.back_corner != Polyline::no_corner)
+    {
+      ++links;
+      CHECK(max_distance_to_segment(p, a, b) <= completion_corner_tolerance);
+      const Vec n0 = to_vec(p.normals.front()[0]), n1 = to_vec(p.normals.front()[1]);
+      CHECK(std::max(std::abs(dot(n0, end_face)), std::abs(dot(n1, end_face))) >= link_normal_cos);
+      CHECK(std::max(std::abs(dot(n0, top)), std::abs(dot(n1, top))) >= link_normal_cos);
+    }
+  CHECK(links == 1);
+}
+
+TEST_CASE("stage 5: the apex of a pyramid, where four creases meet at one point, stays one corner of valence 4",
+          "[stages][completion]")
+{
+  std::array<Vec, 4> directions, ends;
+  std::array<std::array<Vec, 2>, 4> normals;
+  for(int i = 0; i < 4; ++i)
+  {
+    const double angle = 0.5 * pi * i;
+    directions[i] = normalized(Vec(std::cos(angle), std::sin(angle), -1));
+    ends[i] = Vec(0, 0, 0);
+  }
+  for(int i = 0; i < 4; ++i)
+    normals[i] = {{normalized(cross(directions[(i + 3) % 4], directions[i])),
+                   normalized(cross(directions[i], directions[(i + 1) % 4]))}};
+  CGAL::Feature_curve_network<K> net = curves_into_one_corner(ends, directions, normals, Vec(0, 0, 0));
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  REQUIRE(net.corners.size() == 1);
+  CHECK(net.polylines.size() == 4);
+  CHECK(net.corners[0].incident_polylines.size() == 4);
+  CHECK(norm(to_vec(net.corners[0].point)) <= 1e-12);
+}

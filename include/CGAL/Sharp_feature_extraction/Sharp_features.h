@@ -152,8 +152,9 @@ struct Feature_corner
 {
   /// The corner point, exactly equal to the end point of every incident curve.
   typename GeomTraits::Point_3 point;
-  /// Normals of the surfaces meeting at the corner: three when it came from a corner point,
-  /// otherwise the two normals of the curve vertex where completion created it.
+  /// Normals of the surfaces meeting at the corner: three when it came from a corner point or
+  /// from a corner of valence 4 that completion split in two, otherwise the two normals of the
+  /// curve vertex where completion created it.
   std::vector<typename GeomTraits::Vector_3> normals;
   /// Indices (into `Feature_curve_network::polylines`) of the curves that start or end here.
   std::vector<std::size_t> incident_polylines;
