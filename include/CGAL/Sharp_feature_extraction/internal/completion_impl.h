@@ -534,8 +534,7 @@ private:
     Working_corner node{x, {}};
     for(const Free_end& e : group)
     {
-      const Working_polyline& curve = m_net.polylines[e.curve];
-      const std::array<Vec3, 2>& n = e.back ? curve.normals.back() : curve.normals.front();
+      const std::array<Vec3, 2>& n = end_normals(m_net.polylines[e.curve], e.back);
       node.normals.push_back(n[0]);
       node.normals.push_back(n[1]);
     }
