@@ -89,6 +89,18 @@ inline int match_normal_pairs(const std::array<Vec3, 2>& a, const std::array<Vec
   return same >= swapped ? 1 : 2;
 }
 
+/// Whether the normal pairs `a` and `b` match in one order or the other, orientation included:
+/// one normal within `cos_near` of its partner, the other within `cos_far` (a looser
+/// `match_normal_pairs()`, for pairs where one normal may be badly estimated).
+inline bool match_normal_pairs_unevenly(const std::array<Vec3, 2>& a, const std::array<Vec3, 2>& b, double cos_near,
+                                        double cos_far)
+{
+  auto matches = [&](double first, double second) {
+    return (std::max)(first, second) >= cos_near && (std::min)(first, second) >= cos_far;
+  };
+  return matches(a[0].dot(b[0]), a[1].dot(b[1])) || matches(a[0].dot(b[1]), a[1].dot(b[0]));
+}
+
 /// `b` reordered and flipped so that it follows `a` (for consistent normals along a curve).
 inline std::array<Vec3, 2> align_normal_pair(const std::array<Vec3, 2>& a, std::array<Vec3, 2> b)
 {

@@ -75,6 +75,16 @@ struct Completion_constants
   /// normal pairs of one crease (`same_crease_normal_angle`): a direction fixed by two normals
   /// is as uncertain as they are.
   static constexpr double merged_corner_link_angle = same_crease_normal_angle;
+  /// Where two strands of one crease overlap, stage 4 lost the crease and took it up again: the
+  /// normals at a strand's end are those of a growth that failed. Measured on CGAL's rotor and
+  /// spool at 0.5% noise, one normal of such a pair stays within a few degrees of the other
+  /// strand's and the other is off by 30 to 43 degrees. A stretch lies on the crease of another
+  /// curve when one normal matches within `same_crease_normal_angle` and the other within this
+  /// angle (degrees). Parallel creases that share one surface differ more in the other: the two
+  /// edges of a chamfer each turn by at least the sharpness angle (25 degrees by default), so
+  /// their unshared normals are at least twice that apart, and the two sides of a thin wall
+  /// face opposite ways.
+  static constexpr double strand_end_normal_angle = 2 * same_crease_normal_angle;
 };
 
 inline double curve_length(const Working_polyline& c)
@@ -398,9 +408,10 @@ private:
 
   /// Whether a vertex at `point` with the normal pair `normals` lies on the crease of curve `c`:
   /// within a growth radius of it (stage 4 gathers the edge points of one crease within that
-  /// radius, so two strands of it lie closer), with the normal pair of its nearest vertex (two
-  /// parallel creases that close, such as the two edges of a narrow chamfer, do not share both
-  /// surfaces).
+  /// radius, so two strands of it lie closer), with the normal pair of its nearest vertex, one
+  /// normal closely and the other loosely (see `strand_end_normal_angle`; two parallel creases
+  /// that close, such as the two edges of a narrow chamfer or of a thin wall, share only one
+  /// surface).
   bool on_crease_of(const Working_polyline& c, const Vec3& point, const std::array<Vec3, 2>& normals) const
   {
     double distance = std::numeric_limits<double>::infinity(), to_nearest_vertex = distance;
@@ -423,7 +434,8 @@ private:
       }
     }
     return distance <= m_scales.growth_radius
-           && match_normal_pairs(c.normals[nearest], normals, std::cos(radians(same_crease_normal_angle))) != 0;
+           && match_normal_pairs_unevenly(c.normals[nearest], normals, std::cos(radians(same_crease_normal_angle)),
+                                          std::cos(radians(Constants::strand_end_normal_angle)));
   }
 
   // The end (`c`, `back`) reached vertex `v` of curve `d` (possibly `c` itself), along which it
