@@ -1181,6 +1181,66 @@ void check_joined_at_origin(const CGAL::Feature_curve_network<K>& net, std::size
   }
 }
 
+TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they bend around a hole, and keep their "
+          "corner where two shallow chamfers meet",
+          "[stages][completion]")
+{
+  SECTION("the rim of a hole, in four arcs")
+  {
+    // The rim of a hole (a plane, normal z, around a cylinder) of radius 2.5 growth radii, as
+    // CGAL's anchor's holes (4.1% dB, 2.4 growth radii at 0.5% noise): 24 vertices, 15 degrees
+    // apart, in four arcs between corners that stage 2 put on the cylinder, which looks like two
+    // planes over a neighbourhood. At a corner each arc has the normals of its vertex before, as
+    // completion attaches curves to corners. The arcs' ends, fitted over 6 vertices, turn by
+    // about 75 degrees there; their cylinder normals by 30.
+    CGAL::Feature_curve_network<K> net = synthetic_network();
+    const std::size_t vertices = 24, arcs = 4, per_arc = vertices / arcs;
+    const double step = 2 * pi / double(vertices), radius = curve_step / (2 * std::sin(step / 2));
+    auto radial = [&](std::size_t i) { return Vec(std::cos(step * double(i)), std::sin(step * double(i)), 0); };
+    for(std::size_t arc = 0; arc < arcs; ++arc)
+    {
+      std::vector<Vec> points;
+      for(std::size_t i = arc * per_arc; i <= (arc + 1) * per_arc; ++i)
+        points.push_back(radial(i) * radius);
+      Polyline p = make_polyline(points, Vec(0, 0, 1), Vec(0, 0, 1));
+      for(std::size_t k = 0; k < points.size(); ++k)
+      {
+        const Vec n = radial(arc * per_arc + std::clamp<std::size_t>(k, 1, per_arc - 1));
+        p.normals[k][1] = Vector_3(n.x, n.y, n.z);
+      }
+      p.front_corner = arc;
+      p.back_corner = (arc + 1) % arcs;
+      net.polylines.push_back(p);
+      const Vec corner = points.front();
+      net.corners.push_back(CGAL::Feature_corner<K>{Point_3(corner.x, corner.y, corner.z), {}, {(arc + arcs - 1) % arcs, arc}});
+    }
+    CGAL::complete_feature_polylines(net);
+    CHECK(mesh_3_contract_violation(net) == "");
+    CHECK(net.corners.empty());
+    REQUIRE(net.polylines.size() == 1);
+    CHECK(net.polylines[0].is_closed());
+    // Where a corner was dropped, the curve takes the chord over two steps.
+    const Crease circle = Crease::ring(Vec(0, 0, 0), Vec(0, 0, 1), radius, Vec(0, 0, 1));
+    const double chord_sag = radius * (1 - std::cos(step));
+    for(const auto& q : net.polylines[0].points)
+      CHECK(circle.distance_to(to_vec(q)) <= chord_sag);
+  }
+  SECTION("two chamfers of 30 degrees")
+  {
+    // Two edges of a top face (normal z), each with a chamfer 30 degrees off it, meeting at a
+    // right angle; the crease between the chamfers is lost. The chamfers' normals are only 41
+    // degrees apart, but the crease turns as far as they do (90 degrees about z).
+    CGAL::Feature_curve_network<K> net = synthetic_network();
+    const double tilt = pi / 6;
+    net.polylines.push_back(make_polyline(straight(Vec(1, 0, 0), Vec(2 * curve_step, 0, 0), curve_step), Vec(0, 0, 1),
+                                          Vec(0, -std::sin(tilt), std::cos(tilt))));
+    net.polylines.push_back(make_polyline(straight(Vec(0, 1, 0), Vec(0, 2 * curve_step, 0), curve_step), Vec(0, 0, 1),
+                                          Vec(-std::sin(tilt), 0, std::cos(tilt))));
+    CGAL::complete_feature_polylines(net);
+    check_joined_at_origin(net, 2);
+  }
+}
+
 TEST_CASE("stage 5: two curve ends meeting at a right angle get a corner where their lines cross",
           "[stages][completion]")
 {

@@ -22,6 +22,10 @@ constexpr std::size_t no_index = (std::numeric_limits<std::size_t>::max)();
 constexpr double pi = 3.14159265358979323846;
 inline double radians(double degrees) { return degrees * pi / 180.; }
 
+/// The angle (degrees) between two nonzero vectors, from the sine and cosine (exact also near
+/// 0 and 180).
+inline double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180. / pi; }
+
 /// Noise-to-spacing ratio above which the surfaces of stage 2 are planes: a quadric fitted to
 /// noisy points bends towards the other side of a crease.
 constexpr double noise_ratio_for_planes = 0.05;

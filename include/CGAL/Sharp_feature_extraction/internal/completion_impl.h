@@ -75,16 +75,20 @@ struct Completion_constants
   /// normal pairs of one crease (`same_crease_normal_angle`): a direction fixed by two normals
   /// is as uncertain as they are.
   static constexpr double merged_corner_link_angle = same_crease_normal_angle;
-  /// Where two strands of one crease overlap, stage 4 lost the crease and took it up again: the
-  /// normals at a strand's end are those of a growth that failed. Measured on CGAL's rotor and
+  /// A curve ends where stage 4 lost its crease: the normals at a curve's end are those of a
+  /// growth that failed. Where two strands of one crease overlap, measured on CGAL's rotor and
   /// spool at 0.5% noise, one normal of such a pair stays within a few degrees of the other
-  /// strand's and the other is off by 30 to 43 degrees. A stretch lies on the crease of another
-  /// curve when one normal matches within `same_crease_normal_angle` and the other within this
-  /// angle (degrees). Parallel creases that share one surface differ more in the other: the two
-  /// edges of a chamfer each turn by at least the sharpness angle (25 degrees by default), so
-  /// their unshared normals are at least twice that apart, and the two sides of a thin wall
-  /// face opposite ways.
-  static constexpr double strand_end_normal_angle = 2 * same_crease_normal_angle;
+  /// strand's and the other is off by 30 to 43 degrees; at the valence-2 corners that cut the
+  /// holes of CGAL's anchor into 2 to 5 curves at 0.5% noise, one within 17 and the other off by
+  /// 29 to 56 (17 of 18 corners within this angle). Two curve ends belong to one crease when one
+  /// normal matches within `same_crease_normal_angle` and the other within this angle (degrees).
+  /// Parallel creases that share one surface differ more in the other: the two edges of a
+  /// chamfer each turn by at least the sharpness angle (25 degrees by default), so their
+  /// unshared normals are at least twice that apart, and the two sides of a thin wall face
+  /// opposite ways.
+  static constexpr double end_normal_angle = 2 * same_crease_normal_angle;
+  /// A closed curve has at least this many vertices: three distinct, the first repeated last.
+  static constexpr std::size_t min_closed_curve_vertices = 4;
 };
 
 inline double curve_length(const Working_polyline& c)
@@ -409,7 +413,7 @@ private:
   /// Whether a vertex at `point` with the normal pair `normals` lies on the crease of curve `c`:
   /// within a growth radius of it (stage 4 gathers the edge points of one crease within that
   /// radius, so two strands of it lie closer), with the normal pair of its nearest vertex, one
-  /// normal closely and the other loosely (see `strand_end_normal_angle`; two parallel creases
+  /// normal closely and the other loosely (see `end_normal_angle`; two parallel creases
   /// that close, such as the two edges of a narrow chamfer or of a thin wall, share only one
   /// surface).
   bool on_crease_of(const Working_polyline& c, const Vec3& point, const std::array<Vec3, 2>& normals) const
@@ -435,7 +439,7 @@ private:
     }
     return distance <= m_scales.growth_radius
            && match_normal_pairs_unevenly(c.normals[nearest], normals, std::cos(radians(same_crease_normal_angle)),
-                                          std::cos(radians(Constants::strand_end_normal_angle)));
+                                          std::cos(radians(Constants::end_normal_angle)));
   }
 
   // The end (`c`, `back`) reached vertex `v` of curve `d` (possibly `c` itself), along which it
@@ -662,13 +666,24 @@ private:
         {
           const auto [c0, b0] = at[k][0];
           const auto [c1, b1] = at[k][1];
-          // A valence-2 corner is kept only where the curve turns sharply (see split_sharp_turns).
-          if(!continue_each_other(at[k][0], at[k][1]))
+          // A valence-2 corner is kept only where the curve turns sharply (see split_sharp_turns),
+          // and not where that turn is one crease bending.
+          const bool straight = continue_each_other(at[k][0], at[k][1]);
+          if(!straight && !bend_of_one_crease(at[k][0], at[k][1]))
             continue;
+          // Through a bend, the corner point is dropped: the curve would turn sharply there. (It
+          // lies where the ends' tangent lines cross, outside the bend, or where stage 2 fitted
+          // two planes to the bent surface.)
           if(c0 == c1)
           {
             Working_polyline& c = m_net.polylines[c0];
             c.front_corner = c.back_corner = no_index;
+            if(!straight && c.points.size() > Constants::min_closed_curve_vertices)
+            {
+              c.points.erase(c.points.begin());
+              c.normals.erase(c.normals.begin());
+              c.normals.back() = c.normals.front();
+            }
             c.points.back() = c.points.front();
           }
           else
@@ -680,6 +695,11 @@ private:
             if(b1)
               reverse_curve(b);
             a.back_corner = no_index;
+            if(!straight && a.points.size() > 2 && b.points.size() > 2)
+            {
+              a.points.pop_back();
+              a.normals.pop_back();
+            }
             b.points.erase(b.points.begin());
             b.normals.erase(b.normals.begin());
             append_curve(a, b);
@@ -692,17 +712,53 @@ private:
     remove_unused_corners();
   }
 
-  // Whether the curves of two ends at a corner continue each other there: their tangents out
-  // of the corner turn by less than `turn_angle` (degrees).
+  // How far (degrees) the curves of two ends at a corner turn there: the angle between the
+  // tangent into the corner along one and the tangent out of it along the other. Zero where a
+  // curve is too short to have a tangent.
+  double turn_at_corner(const std::pair<std::size_t, bool>& a, const std::pair<std::size_t, bool>& b) const
+  {
+    const Working_polyline& ca = m_net.polylines[a.first];
+    const Working_polyline& cb = m_net.polylines[b.first];
+    if(ca.points.size() < 2 || cb.points.size() < 2)
+      return 0;
+    return angle_between(end_tangent(ca, a.second), -end_tangent(cb, b.second));
+  }
+
+  // Whether the curves of two ends at a corner continue each other there: they turn by less
+  // than `turn_angle` (degrees).
   bool continue_each_other(const std::pair<std::size_t, bool>& a, const std::pair<std::size_t, bool>& b,
                            double turn_angle = Constants::sharp_turn_angle) const
   {
     const Working_polyline& ca = m_net.polylines[a.first];
     const Working_polyline& cb = m_net.polylines[b.first];
-    if(ca.points.size() < 2 || cb.points.size() < 2)
+    return ca.points.size() >= 2 && cb.points.size() >= 2 && turn_at_corner(a, b) <= turn_angle;
+  }
+
+  // Whether two curves that turn sharply at a valence-2 corner are one crease bending there (a
+  // curved crease, such as the rim of a hole, that stage 4 left in pieces), not two creases
+  // meeting where a third was lost. Their ends share one surface, their other normals match
+  // loosely (`end_normal_angle`), and the turn is not the normals': where two creases of a
+  // surface meet, the crease line (the cross product of the normals) turns about the shared
+  // normal as far as the unshared normals do, whereas the tangents of a tight bend, fitted over
+  // a few vertices on each side of a gap, turn more than the surfaces between its ends (at the
+  // corners that cut the anchor's holes, 73 to 110 degrees against 20 to 56). A turn that
+  // exceeds the normals' by more than `same_crease_normal_angle` is the bend's. Two chamfers
+  // of 30 degrees meeting at a right angle turn as far as their normals do and keep their
+  // corner.
+  bool bend_of_one_crease(const std::pair<std::size_t, bool>& a, const std::pair<std::size_t, bool>& b) const
+  {
+    const std::array<Vec3, 2>& na = end_normals(m_net.polylines[a.first], a.second);
+    const std::array<Vec3, 2>& nb_raw = end_normals(m_net.polylines[b.first], b.second);
+    if(!match_normal_pairs_unevenly(na, nb_raw, std::cos(radians(same_crease_normal_angle)),
+                                    std::cos(radians(Constants::end_normal_angle))))
       return false;
-    const Vec3 ta = -end_tangent(ca, a.second), tb = -end_tangent(cb, b.second);
-    return ta.dot(tb) <= -std::cos(radians(turn_angle));
+    const std::array<Vec3, 2> nb = align_normal_pair(na, nb_raw);
+    const std::size_t shared = na[0].dot(nb[0]) >= na[1].dot(nb[1]) ? 0 : 1, other = 1 - shared;
+    const Vec3 axis = (na[shared] + nb[shared]).normalized();
+    const Vec3 across_a = na[other] - na[other].dot(axis) * axis, across_b = nb[other] - nb[other].dot(axis) * axis;
+    if(across_a.norm() == 0 || across_b.norm() == 0)
+      return false;
+    return turn_at_corner(a, b) > angle_between(across_a, across_b) + same_crease_normal_angle;
   }
 
   // A corner where two curves continue each other and a third, from the corner to a free end,
