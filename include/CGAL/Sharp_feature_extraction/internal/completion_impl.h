@@ -79,8 +79,8 @@ struct Completion_constants
   /// growth that failed. Where two strands of one crease overlap, measured on CGAL's rotor and
   /// spool at 0.5% noise, one normal of such a pair stays within a few degrees of the other
   /// strand's and the other is off by 30 to 43 degrees; at the valence-2 corners that cut the
-  /// holes of CGAL's anchor into 2 to 5 curves at 0.5% noise, one within 17 and the other off by
-  /// 29 to 56 (17 of 18 corners within this angle). Two curve ends belong to one crease when one
+  /// holes of CGAL's anchor into 2 to 5 curves at 0.5% noise, one within 18 and the other off by
+  /// 17 to 56 (17 of 18 corners within this angle). Two curve ends belong to one crease when one
   /// normal matches within `same_crease_normal_angle` and the other within this angle (degrees).
   /// Parallel creases that share one surface differ more in the other: the two edges of a
   /// chamfer each turn by at least the sharpness angle (25 degrees by default), so their
@@ -741,7 +741,7 @@ private:
   // surface meet, the crease line (the cross product of the normals) turns about the shared
   // normal as far as the unshared normals do, whereas the tangents of a tight bend, fitted over
   // a few vertices on each side of a gap, turn more than the surfaces between its ends (at the
-  // corners that cut the anchor's holes, 73 to 110 degrees against 20 to 56). A turn that
+  // corners that cut the anchor's holes, 73 to 110 degrees against 17 to 56). A turn that
   // exceeds the normals' by more than `same_crease_normal_angle` is the bend's. Two chamfers
   // of 30 degrees meeting at a right angle turn as far as their normals do and keep their
   // corner.
