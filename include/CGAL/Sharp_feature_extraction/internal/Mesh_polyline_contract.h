@@ -47,6 +47,9 @@ struct Mesh_polyline_contract
   /// polylines is kept. The same threshold as stage 5 of the extraction (completion), so that
   /// extracted curves already satisfy it.
   static constexpr double sharp_turn_angle = 60;
+  /// A closed polyline has at least this many vertices: three distinct points, the first
+  /// repeated last. Fewer is a degenerate loop.
+  static constexpr std::size_t min_loop_vertices = 4;
   /// Near a point two curves share, their vertices are close because both curves start there;
   /// they are fine as long as the curves leave it at an angle (then the gap grows like the
   /// distance to the junction times the angle). Below this angle (degrees) the two run together:
@@ -302,7 +305,7 @@ std::vector<Mesh_3_polyline_problem> find_contract_violations(const std::vector<
       else if(i > 0 && pts[i] == pts[i - 1])
         say(Problem::ZERO_LENGTH_SEGMENT, c, c, "repeated consecutive point");
     }
-    if(pts.front() == pts.back() && pts.size() < 4)
+    if(pts.front() == pts.back() && pts.size() < Mesh_polyline_contract::min_loop_vertices)
       say(Problem::DEGENERATE_LOOP, c, c, "closed with fewer than three distinct points");
     for(std::size_t i : sharp_turn_vertices(curves[c], tolerance, tolerances.angle, true))
       say(Problem::SHARP_TURN, c, c, "turns by more than the maximum angle at vertex " + std::to_string(i));

@@ -556,7 +556,7 @@ void drop_degenerate_and_short(std::vector<Curve>& curves, const Repair_settings
   for(Curve& c : curves) {
     const bool closed = c.points.size() > 2 && c.points.front() == c.points.back();
     const double min_length = closed ? 3 * settings.minimum_length : settings.minimum_length;
-    const bool degenerate = c.points.size() < 2 || (c.points.size() < 4 && closed) ||
+    const bool degenerate = c.points.size() < 2 || (c.points.size() < Mesh_polyline_contract::min_loop_vertices && closed) ||
                             (c.points.front() == c.points.back() && !closed);
     if(degenerate || curve_length(c) < min_length || curve_length(c) == 0) {
       ++report.dropped_short;
@@ -572,7 +572,7 @@ std::size_t count_closed_loops(const std::vector<Curve>& curves)
 {
   std::size_t n = 0;
   for(const Curve& c : curves)
-    n += (c.points.size() > 3 && c.points.front() == c.points.back()) ? 1 : 0;
+    n += (c.points.size() >= Mesh_polyline_contract::min_loop_vertices && c.points.front() == c.points.back()) ? 1 : 0;
   return n;
 }
 

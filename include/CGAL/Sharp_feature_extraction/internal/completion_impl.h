@@ -87,8 +87,9 @@ struct Completion_constants
   /// unshared normals are at least twice that apart, and the two sides of a thin wall face
   /// opposite ways.
   static constexpr double end_normal_angle = 2 * same_crease_normal_angle;
-  /// A closed curve has at least this many vertices: three distinct, the first repeated last.
-  static constexpr std::size_t min_closed_curve_vertices = 4;
+  /// A closed curve has at least this many vertices (three distinct, the first repeated last):
+  /// the Mesh_3 contract's.
+  static constexpr std::size_t min_closed_curve_vertices = mesh_polylines::Mesh_polyline_contract::min_loop_vertices;
 };
 
 inline double curve_length(const Working_polyline& c)
