@@ -1241,6 +1241,62 @@ TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they be
   }
 }
 
+TEST_CASE("stage 5: a corner is placed on the crease lines of its curves' normals, not on the line through their "
+          "scattered vertices",
+          "[stages][completion]")
+{
+  // A cube corner at the origin, its three curves attached to it. Their vertices tilt by 10
+  // degrees off their creases (each towards the next axis) about the middle of the window that
+  // places the corner, as a few noisy vertices can, while their normals are the faces' own: the
+  // lines through the vertices pass 0.52 steps from the corner and cross 0.40 steps from it,
+  // beyond the tolerance.
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const std::array<Vec, 3> axes = {Vec(1, 0, 0), Vec(0, 1, 0), Vec(0, 0, 1)};
+  const double tilt = std::tan(pi / 18), window_middle = 3 * curve_step;
+  const int steps = 15;
+  for(std::size_t a = 0; a < 3; ++a)
+  {
+    const Vec& along = axes[a];
+    const Vec& towards = axes[(a + 1) % 3];
+    std::vector<Vec> points = {Vec(0, 0, 0)};
+    for(int step = 1; step <= steps; ++step)
+    {
+      const double t = step * curve_step;
+      points.push_back(along * t + towards * ((t - window_middle) * tilt));
+    }
+    Polyline p = make_polyline(points, -axes[(a + 1) % 3], -axes[(a + 2) % 3]);
+    p.front_corner = 0;
+    net.polylines.push_back(p);
+  }
+  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1, 2}});
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  REQUIRE(net.polylines.size() == 3);
+  REQUIRE(net.corners.size() == 1);
+  CHECK(net.corners[0].incident_polylines.size() == 3);
+  CHECK(norm(to_vec(net.corners[0].point)) <= completion_corner_tolerance);
+}
+
+TEST_CASE("stage 5: a short spur that leaves a corner along another curve is dropped", "[stages][completion]")
+{
+  // A cube corner with its three curves, and a fragment of 3 steps (2 growth radii, shorter than
+  // the shortest free curve kept) that leaves the corner beside the x curve, with its normals.
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const Vec x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), x, curve_step), -y, -z));
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), y, curve_step), -x, -z));
+  net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), z, curve_step), -x, -y));
+  const double beside = 0.3 * curve_step;
+  net.polylines.push_back(make_polyline({Vec(0, 0, 0), Vec(curve_step, beside, 0), Vec(2 * curve_step, beside, 0),
+                                         Vec(3 * curve_step, beside, 0)},
+                                        -y, -z));
+  for(Polyline& p : net.polylines)
+    p.front_corner = 0;
+  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1, 2, 3}});
+  CGAL::complete_feature_polylines(net);
+  check_joined_at_origin(net, 3);
+}
+
 TEST_CASE("stage 5: two curve ends meeting at a right angle get a corner where their lines cross",
           "[stages][completion]")
 {
