@@ -928,25 +928,25 @@ private:
     double to = from + Constants::corner_fit_window * m_scales.growth_radius;
     if((back ? c.front_corner : c.back_corner) != no_index)
       to = (std::min)(to, curve_length(c) - from);
-    std::vector<Vec3> window;
-    std::vector<std::size_t> window_vertices;
+    std::vector<std::size_t> window;
     double arc = 0;
     for(std::size_t k = 1; k < n && arc <= to; ++k)
     {
       arc += (c.points[at(k)] - c.points[at(k - 1)]).norm();
       if(arc >= from && arc <= to)
-      {
-        window.push_back(c.points[at(k)]);
-        window_vertices.push_back(at(k));
-      }
+        window.push_back(at(k));
     }
     line = Free_end{no_index, back, Vec3::Zero(), Vec3::Zero()};
-    if(window.size() < 2 || !fit_line(window, line.point, line.tangent))
+    if(window.size() < 2)
+      return false;
+    fit_principal_line(window.size(), [&](std::size_t j) -> const Vec3& { return c.points[window[j]]; }, line.point,
+                       line.tangent);
+    if(!line.tangent.allFinite())
       return false;
     if(direction == Line_direction::of_normals)
     {
       Vec3 crease = Vec3::Zero();
-      for(std::size_t v : window_vertices)
+      for(std::size_t v : window)
       {
         const Vec3 t = c.normals[v][0].cross(c.normals[v][1]);
         crease += t.dot(line.tangent) >= 0 ? t : Vec3(-t);
