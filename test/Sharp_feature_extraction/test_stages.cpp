@@ -1181,6 +1181,18 @@ void check_joined_at_origin(const CGAL::Feature_curve_network<K>& net, std::size
   }
 }
 
+/// Attaches the front of every curve of `net` to one new corner at the origin, where they start.
+void attach_fronts_to_corner_at_origin(CGAL::Feature_curve_network<K>& net)
+{
+  CGAL::Feature_corner<K> corner{Point_3(0, 0, 0), {}, {}};
+  for(std::size_t c = 0; c < net.polylines.size(); ++c)
+  {
+    net.polylines[c].front_corner = net.corners.size();
+    corner.incident_polylines.push_back(c);
+  }
+  net.corners.push_back(corner);
+}
+
 TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they bend around a hole, and keep their "
           "corner where two shallow chamfers meet",
           "[stages][completion]")
@@ -1264,11 +1276,9 @@ TEST_CASE("stage 5: a corner is placed on the crease lines of its curves' normal
       const double t = step * curve_step;
       points.push_back(along * t + towards * ((t - window_middle) * tilt));
     }
-    Polyline p = make_polyline(points, -axes[(a + 1) % 3], -axes[(a + 2) % 3]);
-    p.front_corner = 0;
-    net.polylines.push_back(p);
+    net.polylines.push_back(make_polyline(points, -axes[(a + 1) % 3], -axes[(a + 2) % 3]));
   }
-  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1, 2}});
+  attach_fronts_to_corner_at_origin(net);
   CGAL::complete_feature_polylines(net);
   CHECK(mesh_3_contract_violation(net) == "");
   REQUIRE(net.polylines.size() == 3);
@@ -1290,9 +1300,7 @@ TEST_CASE("stage 5: a short spur that leaves a corner along another curve is dro
   net.polylines.push_back(make_polyline({Vec(0, 0, 0), Vec(curve_step, beside, 0), Vec(2 * curve_step, beside, 0),
                                          Vec(3 * curve_step, beside, 0)},
                                         -y, -z));
-  for(Polyline& p : net.polylines)
-    p.front_corner = 0;
-  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1, 2, 3}});
+  attach_fronts_to_corner_at_origin(net);
   CGAL::complete_feature_polylines(net);
   check_joined_at_origin(net, 3);
 }
@@ -1335,9 +1343,7 @@ TEST_CASE("stage 5: a curve end that ran past a corner, within a growth radius o
   const Vec x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
   net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), x, curve_step), -y, -z));
   net.polylines.push_back(make_polyline(straight(Vec(0, 0, 0), y, curve_step), -x, -z));
-  for(Polyline& p : net.polylines)
-    p.front_corner = 0;
-  net.corners.push_back(CGAL::Feature_corner<K>{Point_3(0, 0, 0), {}, {0, 1}});
+  attach_fronts_to_corner_at_origin(net);
   std::vector<Vec> down = straight(z, z * curve_step, curve_step);
   // Its second-to-last vertex is not past the corner, but reaching the corner from it would be
   // a turn of 76 degrees, which the Mesh_3 step would make a one-segment curve.
