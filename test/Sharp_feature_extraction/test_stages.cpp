@@ -1193,6 +1193,37 @@ void attach_fronts_to_corner_at_origin(CGAL::Feature_curve_network<K>& net)
   net.corners.push_back(corner);
 }
 
+/// The rim of a hole (a plane, normal z, around a cylinder) centred at the origin, with
+/// `vertices` vertices one `curve_step` apart.
+struct Hole_rim
+{
+  explicit Hole_rim(std::size_t vertices)
+    : step(2 * pi / double(vertices)), radius(curve_step / (2 * std::sin(step / 2)))
+  {}
+
+  /// The cylinder's normal at vertex `i`.
+  Vec radial(std::size_t i) const { return Vec(std::cos(step * double(i)), std::sin(step * double(i)), 0); }
+
+  /// The arc from vertex `first` to vertex `last`, vertex k with the normals of vertex
+  /// `normal_of(k)`.
+  template <typename NormalOf>
+  Polyline arc(std::size_t first, std::size_t last, const NormalOf& normal_of) const
+  {
+    std::vector<Vec> points;
+    for(std::size_t i = first; i <= last; ++i)
+      points.push_back(radial(i) * radius);
+    Polyline p = make_polyline(points, Vec(0, 0, 1), Vec(0, 0, 1));
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      const Vec n = radial(normal_of(k));
+      p.normals[k][1] = Vector_3(n.x, n.y, n.z);
+    }
+    return p;
+  }
+
+  double step, radius;
+};
+
 TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they bend around a hole, and keep their "
           "corner where two shallow chamfers meet",
           "[stages][completion]")
@@ -1207,24 +1238,18 @@ TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they be
     // about 75 degrees there; their cylinder normals by 30.
     CGAL::Feature_curve_network<K> net = synthetic_network();
     const std::size_t vertices = 24, arcs = 4, per_arc = vertices / arcs;
-    const double step = 2 * pi / double(vertices), radius = curve_step / (2 * std::sin(step / 2));
-    auto radial = [&](std::size_t i) { return Vec(std::cos(step * double(i)), std::sin(step * double(i)), 0); };
+    const Hole_rim rim(vertices);
+    const double step = rim.step, radius = rim.radius;
     for(std::size_t arc = 0; arc < arcs; ++arc)
     {
-      std::vector<Vec> points;
-      for(std::size_t i = arc * per_arc; i <= (arc + 1) * per_arc; ++i)
-        points.push_back(radial(i) * radius);
-      Polyline p = make_polyline(points, Vec(0, 0, 1), Vec(0, 0, 1));
-      for(std::size_t k = 0; k < points.size(); ++k)
-      {
-        const Vec n = radial(arc * per_arc + std::clamp<std::size_t>(k, 1, per_arc - 1));
-        p.normals[k][1] = Vector_3(n.x, n.y, n.z);
-      }
+      Polyline p = rim.arc(arc * per_arc, (arc + 1) * per_arc, [&](std::size_t k) {
+        return arc * per_arc + std::clamp<std::size_t>(k, 1, per_arc - 1);
+      });
       p.front_corner = arc;
       p.back_corner = (arc + 1) % arcs;
+      const Point_3 corner = p.points.front();
       net.polylines.push_back(p);
-      const Vec corner = points.front();
-      net.corners.push_back(CGAL::Feature_corner<K>{Point_3(corner.x, corner.y, corner.z), {}, {(arc + arcs - 1) % arcs, arc}});
+      net.corners.push_back(CGAL::Feature_corner<K>{corner, {}, {(arc + arcs - 1) % arcs, arc}});
     }
     CGAL::complete_feature_polylines(net);
     CHECK(mesh_3_contract_violation(net) == "");
@@ -1251,6 +1276,43 @@ TEST_CASE("stage 5: curves meeting at a sharp turn become one loop where they be
     CGAL::complete_feature_polylines(net);
     check_joined_at_origin(net, 2);
   }
+}
+
+TEST_CASE("stage 5: a curve that leaves a corner and returns to it at once is dropped, and a circle in two arcs "
+          "between such corners becomes one loop",
+          "[stages][completion]")
+{
+  // The rim of a hole (a plane, normal z, around a cylinder) in two arcs of 12 steps, joined at
+  // two corners. At each, stage 4 left a fragment whose two vertices both reached the corner (as
+  // on CGAL's rotor at 0.5% noise): a curve of length 0 from the corner back to itself, which
+  // made the corner look like one of valence 4, so that the arcs kept it.
+  CGAL::Feature_curve_network<K> net = synthetic_network();
+  const std::size_t vertices = 24, arcs = 2, per_arc = vertices / arcs;
+  const Hole_rim rim(vertices);
+  for(std::size_t arc = 0; arc < arcs; ++arc)
+  {
+    Polyline p = rim.arc(arc * per_arc, (arc + 1) * per_arc, [&](std::size_t k) { return arc * per_arc + k; });
+    p.front_corner = arc;
+    p.back_corner = (arc + 1) % arcs;
+    net.polylines.push_back(p);
+  }
+  for(std::size_t arc = 0; arc < arcs; ++arc)
+  {
+    const Vec corner = rim.radial(arc * per_arc) * rim.radius;
+    Polyline fragment = make_polyline({corner, corner}, Vec(0, 0, 1), rim.radial(arc * per_arc));
+    fragment.front_corner = fragment.back_corner = arc;
+    net.polylines.push_back(fragment);
+    net.corners.push_back(CGAL::Feature_corner<K>{Point_3(corner.x, corner.y, corner.z), {},
+                                                  {(arc + arcs - 1) % arcs, arc, arcs + arc}});
+  }
+  CGAL::complete_feature_polylines(net);
+  CHECK(mesh_3_contract_violation(net) == "");
+  CHECK(net.corners.empty());
+  REQUIRE(net.polylines.size() == 1);
+  CHECK(net.polylines[0].is_closed());
+  const Crease circle = Crease::ring(Vec(0, 0, 0), Vec(0, 0, 1), rim.radius, Vec(0, 0, 1));
+  for(const auto& q : net.polylines[0].points)
+    CHECK(circle.distance_to(to_vec(q)) <= completion_corner_tolerance);
 }
 
 TEST_CASE("stage 5: a corner is placed on the crease lines of its curves' normals, not on the line through their "
