@@ -766,23 +766,12 @@ private:
     return turn_at_corner(a, b) > angle_between(across_a, across_b) + same_crease_normal_angle;
   }
 
-  // A spur is a curve from a corner to a free end, shorter than the shortest free curve kept.
-  // It is a fragment of noise, and is dropped, where
-  // - the corner has valence 3 and the two other curves continue each other: a crease crossed
-  //   by the fragment (under noise, around small holes and along thin walls), and the corner
-  //   then merges through. A short crease that ends at a true corner is kept: there the other
-  //   curves turn (see `spur_crossing_turn_angle`);
-  // - or another curve leaves the corner along it (see `runs_alongside()`): a second strand of
-  //   that curve's crease, which stage 4 started beside it. Kept, it would give a true corner of
-  //   valence 3 a fourth curve that touches the third where the corner moves (measured on CGAL's
-  //   fandisk at 0.5% noise: the two strands and the stretch of the crease between their contact
-  //   and the corner became three curves of 2 and 3 vertices).
   // A curve that leaves a corner and returns to it within a growth radius follows no crease: a
   // fragment of stage 4 beside the corner, both of whose ends reached it in the end analysis
-  // (`resolve_end()`). Kept, it adds two ends to the corner, and a corner between two pieces of one crease looks
-  // like one of valence 4, which the pieces keep (measured on CGAL's rotor at 100k points and
-  // 0.5% noise, seed 1: such curves of length 0 at 4 of its 5 corners, one of which cut a
-  // circle of 0.5 dB into 2 curves). Returns whether one was dropped.
+  // (`resolve_end()`). Kept, it adds two ends to the corner, and a corner between two pieces of
+  // one crease looks like one of valence 4, which the pieces keep (measured on CGAL's rotor at
+  // 100k points and 0.5% noise, seed 1: such curves of length 0 at 4 of its 5 corners, one of
+  // which cut a circle of 0.5 dB into 2 curves). Returns whether one was dropped.
   bool drop_short_corner_loops()
   {
     const auto loop = std::find_if(m_net.polylines.begin(), m_net.polylines.end(), [&](const Working_polyline& c) {
@@ -795,6 +784,17 @@ private:
     return true;
   }
 
+  // A spur is a curve from a corner to a free end, shorter than the shortest free curve kept.
+  // It is a fragment of noise, and is dropped, where
+  // - the corner has valence 3 and the two other curves continue each other: a crease crossed
+  //   by the fragment (under noise, around small holes and along thin walls), and the corner
+  //   then merges through. A short crease that ends at a true corner is kept: there the other
+  //   curves turn (see `spur_crossing_turn_angle`);
+  // - or another curve leaves the corner along it (see `runs_alongside()`): a second strand of
+  //   that curve's crease, which stage 4 started beside it. Kept, it would give a true corner of
+  //   valence 3 a fourth curve that touches the third where the corner moves (measured on CGAL's
+  //   fandisk at 0.5% noise: the two strands and the stretch of the crease between their contact
+  //   and the corner became three curves of 2 and 3 vertices).
   bool drop_short_spurs()
   {
     const auto at = incidences();
