@@ -26,6 +26,8 @@
 #      fandisk at 5% noise, the heaviest noise of the paper's Fig. 12 (ours only, with a picture);
 #   4. scaling on fandisk from 50k to 2M points;
 #   5. speed: fandisk at 500k points with 1 and 2 threads (noise 0 and 0.5%), and 10M points;
+#   5a. density: pinion and rotor at as many points as fandisk's speed rows, 0.5% noise (beside
+#      their accuracy rows and fandisk's speed row: the same noise on a denser cloud);
 #   5b. scanner-like inputs: fandisk and a square scanned by the simulated scanner
 #      (benchmark/Sharp_feature_extraction/scan_simulation.h) with the defects of real files;
 #   6. the report (benchmark/Sharp_feature_extraction/make_report.py);
@@ -159,6 +161,7 @@ if [ "$QUICK" = 1 ]; then
   CONTROL_VARIANTS="noise0:0:0:1"
   SCALING_SIZES="50000 100000"
   SPEED_POINTS=100000
+  DENSITY_PARTS="rotor"
   LARGE_POINTS=""
   SCAN_RETURNS=50000
   SCAN_DUPLICATES=500000
@@ -173,6 +176,7 @@ else
   CONTROL_VARIANTS="$VARIANTS"
   SCALING_SIZES="50000 100000 200000 500000 1000000 2000000"
   SPEED_POINTS=500000
+  DENSITY_PARTS="pinion rotor"
   LARGE_POINTS=10000000
   SCAN_RETURNS=100000
   SCAN_DUPLICATES=1000000
@@ -354,6 +358,14 @@ if [ -n "$LARGE_POINTS" ]; then
   run_row "$DATA/speed.jsonl" "speed_noise0_$LARGE_POINTS" ours "$BIN/sfe_bench_run" --mesh "$MESHES/fandisk.off" \
     --truth "$DATA/truth/fandisk" --points "$LARGE_POINTS" --noise 0 --seed "$SEED" --threads 2
 fi
+
+# The same noise as the accuracy rows' noise0.5 variant on a denser cloud: the scales follow the
+# noise, so the curves should be at least as good. Fandisk's row is its speed row above.
+log "density: $DENSITY_PARTS at $SPEED_POINTS points, noise 0.5%, 2 threads"
+for part in $DENSITY_PARTS; do
+  run_row "$DATA/density.jsonl" "density_${part}_noise0.5" ours "$BIN/sfe_bench_run" --mesh "$MESHES/$part.off" \
+    --truth "$DATA/truth/$part" --points "$SPEED_POINTS" --noise 0.005 --seed "$SEED" --threads 2 --patches 0
+done
 
 scanner_rows
 

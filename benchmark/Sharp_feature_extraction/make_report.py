@@ -157,6 +157,46 @@ def secs(value):
     return f"{value:.2f}" if value < 10 else f"{value:.1f}"
 
 
+def write_density_section(w, accuracy_rows, speed_rows, density_rows):
+    """Section 7c: each part's 0.5%-noise accuracy row beside the same noise on a denser cloud
+    (fandisk's speed row with 2 threads, the density rows of the other parts)."""
+    dense = {split_label(r["label"][len("density_"):])[0]: r for r in density_rows if not r.get("status")}
+    speed = next((r for r in speed_rows if r.get("method") == "ours" and not r.get("status")
+                  and r.get("noise") == 0.005 and r.get("threads") == 2), None)
+    if speed:
+        dense["fandisk"] = speed
+    sparse = {split_label(r["label"])[0]: r for r in accuracy_rows
+              if r.get("method") == "ours" and not r.get("status") and split_label(r["label"])[1] == "noise0.5"}
+    parts = [p for p in sorted(dense) if p in sparse]
+    if not parts:
+        return
+    w("## 7c. Density: the same noise on a denser cloud\n")
+    w("Noise 0.5% dB, default call, seed 1: each part's row of section 3 beside a cloud of the same "
+      "noise with more points. The scales follow the noise, so the denser cloud should give curves "
+      "at least as good; the change is in the last column.\n")
+    rows = []
+    for part in parts:
+        before, after = sparse[part], dense[part]
+        for r in (before, after):
+            radius = r.get("scale_growth_radius")
+            rows.append([part, f"{r['points']:,}", fmt(r.get("scale_candidate_neighbors")),
+                         fmt(r.get("scale_search_fraction"), 2),
+                         fmt(radius / r["scale_noise"], 1) if radius and r.get("scale_noise") else "-",
+                         fmt(r.get("ours_f1@0.5")),
+                         f"{r.get('ours_corners_found@0.5', '-')} / {r.get('ours_true_corners', '-')}",
+                         fmt(r.get("ours_pieces_per_true_curve@1"), 2), secs(r.get("time_total")),
+                         "" if r is before else
+                         f"F1 {after['ours_f1@0.5'] - before['ours_f1@0.5']:+.3f}, corners "
+                         f"{after['ours_corners_found@0.5'] - before['ours_corners_found@0.5']:+d}"])
+    w(table(["part", "points", "stage-1 neighbours", "search fraction (means)", "stage-1 radius / noise",
+             "F1 0.5%", "corners found 0.5%",
+             "pieces per found curve 1%", "time (s)", "denser - sparser"], rows))
+    w("\nThe stage-1 neighbours are points, or means of points where the search fraction is below 1 "
+      "(see the manual's scale table); their radius (the median, which is also the growth radius of "
+      "stage 4) is given in units of the measured noise: the noise alone should set it. Fandisk's denser row is its 2-thread speed row (section 7b, "
+      "patches included in its run), the others ran with 2 threads and without patches.\n")
+
+
 def table(header, rows):
     lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
     for r in rows:
@@ -357,10 +397,12 @@ def write_report(data, report, quick):
     speed_rows = read_rows(os.path.join(data, "speed.jsonl"))
     scanner_rows = read_rows(os.path.join(data, "scanner.jsonl"))
     heavy_rows = read_rows(os.path.join(data, "heavy.jsonl"))
+    density_rows = read_rows(os.path.join(data, "density.jsonl"))
     machine = machine_info(data)
     vcm_setting = open(os.path.join(data, "vcm_setting.txt")).read().split()
 
     failures = [r for r in accuracy_rows + scaling_rows + sweep_rows + repeat_rows + speed_rows + scanner_rows + heavy_rows
+                + density_rows
                 if r.get("status") in ("failed", "timeout")]
     ours, vcm = {}, {}
     for r in accuracy_rows:
@@ -657,6 +699,9 @@ def write_report(data, report, quick):
         w("\nVCM runs single-threaded (CGAL 5.5). Heap: bytes allocated by the pipeline through operator new "
           "at its peak; peak RSS: the whole process (the cloud itself, 24 bytes per point, the ground truth "
           "and the scoring included).\n")
+
+    # Density.
+    write_density_section(w, accuracy_rows, speed_rows, density_rows)
 
     # Pictures.
     w("## 8. Our curves on fandisk\n")

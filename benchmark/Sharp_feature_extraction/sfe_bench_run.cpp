@@ -223,7 +223,8 @@ int main(int argc, char** argv)
           .add("scale_rmls_neighbors", s.rmls_neighbors)
           .add("scale_residual_threshold", s.residual_threshold / truth.diagonal)
           .add("scale_sampled_fraction", s.sampled_fraction)
-          .add("scale_search_fraction", s.search_fraction);
+          .add("scale_search_fraction", s.search_fraction)
+          .add("scale_growth_radius", s.growth_radius / truth.diagonal);
 
       const std::vector<double> eps = report_eps();
       add_curve_fields(line, "ours",
