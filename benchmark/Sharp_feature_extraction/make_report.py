@@ -189,12 +189,12 @@ def write_density_section(w, accuracy_rows, speed_rows, density_rows):
                          f"F1 {after['ours_f1@0.5'] - before['ours_f1@0.5']:+.3f}, corners "
                          f"{after['ours_corners_found@0.5'] - before['ours_corners_found@0.5']:+d}"])
     w(table(["part", "points", "stage-1 neighbours", "search fraction (means)", "stage-1 radius / noise",
-             "F1 0.5%", "corners found 0.5%",
-             "pieces per found curve 1%", "time (s)", "denser - sparser"], rows))
+             "F1 0.5%", "corners found 0.5%", "pieces per found curve 1%", "time (s)", "denser - sparser"], rows))
     w("\nThe stage-1 neighbours are points, or means of points where the search fraction is below 1 "
       "(see the manual's scale table); their radius (the median, which is also the growth radius of "
-      "stage 4) is given in units of the measured noise: the noise alone should set it. Fandisk's denser row is its 2-thread speed row (section 7b, "
-      "patches included in its run), the others ran with 2 threads and without patches.\n")
+      "stage 4) is given in units of the measured noise: the noise alone should set it. Fandisk's "
+      "denser row is its 2-thread speed row (section 7b, patches included in its run), the others "
+      "ran with 2 threads and without patches.\n")
 
 
 def table(header, rows):
