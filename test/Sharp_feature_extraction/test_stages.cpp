@@ -420,6 +420,32 @@ TEST_CASE("stage 1: on a cube with 0.5% noise, near-edge residuals still stand o
   CHECK(r.near_median >= minimum_residual_contrast_noisy * r.far_median);
 }
 
+TEST_CASE("stage 1: under noise the automatic threshold is at most 1.3 times the median residual, else the mean",
+          "[stages][candidates][noise]")
+{
+  namespace sfe = CGAL::Sharp_feature_extraction::internal;
+  // Residuals of a cloud whose smooth surfaces bend within a neighbourhood: 60% of the fits read
+  // the noise (1), 40% also a curvature the jet cannot follow (4), so the mean (2.2) is far above
+  // the median (1). Residuals above the neighbourhood radius (outliers) stay out of the mean.
+  std::vector<double> residuals;
+  for(int i = 0; i < 1000; ++i)
+    residuals.push_back(i % 5 < 3 ? 1. : 4.);
+  residuals.push_back(1e6);
+  sfe::Scales scales;
+  scales.spacing = 10;
+  scales.candidate_radius = 100;
+  scales.noise = 1; // 0.1 spacings: the noise dominates (see `noise_dominates()`)
+  REQUIRE(sfe::noise_dominates(scales));
+  CHECK(sfe::automatic_residual_threshold(residuals, scales) == Approx(sfe::maximum_threshold_per_median_residual));
+  scales.noise = 0; // exact data: the paper's mean
+  CHECK(sfe::automatic_residual_threshold(residuals, scales) == Approx(2.2));
+  // Where the mean is below the bound, it stands also under noise.
+  std::vector<double> flat(1000, 1.);
+  flat[0] = 50;
+  scales.noise = 1;
+  CHECK(sfe::automatic_residual_threshold(flat, scales) == Approx(1.049));
+}
+
 TEST_CASE("stage 2: on an exact cube, edge points and corner points lie on the true edges and corners",
           "[stages][projection]")
 {

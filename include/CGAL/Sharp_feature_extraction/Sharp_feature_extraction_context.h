@@ -83,7 +83,7 @@ public:
   ///     \cgalParamDescription{the candidate threshold tau (a distance)}
   ///     \cgalParamType{`double`}
   ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of
-  ///       a stage-1 neighbourhood}
+  ///       a stage-1 neighbourhood; on noisy clouds at most 1.3 times the median residual}
   ///     \cgalParamExtra{a negative value selects the default; the default of the member functions
   ///       that read it (see `CGAL::compute_candidate_points()`)}
   ///   \cgalParamNEnd
@@ -209,7 +209,7 @@ public:
   ///     \cgalParamDescription{the candidate threshold tau (a distance)}
   ///     \cgalParamType{`double`}
   ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of
-  ///       a stage-1 neighbourhood}
+  ///       a stage-1 neighbourhood; on noisy clouds at most 1.3 times the median residual}
   ///     \cgalParamExtra{a negative value selects the default; the default of the member functions
   ///       that read it (see `CGAL::compute_candidate_points()`)}
   ///   \cgalParamNEnd
@@ -343,7 +343,8 @@ public:
   ///     \cgalParamDescription{the candidate threshold tau (a distance)}
   ///     \cgalParamType{`double`}
   ///     \cgalParamDefault{the value given to the constructor, otherwise the mean residual of the
-  ///       points whose residual is at most the radius of a stage-1 neighbourhood}
+  ///       points whose residual is at most the radius of a stage-1 neighbourhood; on noisy clouds
+  ///       at most 1.3 times the median residual}
   ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`; a negative value selects the
   ///       default}
   ///   \cgalParamNEnd
@@ -600,7 +601,8 @@ public:
   ///     \cgalParamDescription{the candidate threshold tau (a distance)}
   ///     \cgalParamType{`double`}
   ///     \cgalParamDefault{the value given to the constructor, otherwise the mean residual of the
-  ///       points whose residual is at most the radius of a stage-1 neighbourhood}
+  ///       points whose residual is at most the radius of a stage-1 neighbourhood; on noisy clouds
+  ///       at most 1.3 times the median residual}
   ///     \cgalParamExtra{see `CGAL::compute_candidate_points()`; a negative value selects the
   ///       default}
   ///   \cgalParamNEnd

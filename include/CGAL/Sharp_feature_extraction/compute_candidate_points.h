@@ -57,7 +57,9 @@ namespace CGAL {
 ///     \cgalParamType{`double` (a distance)}
 ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of a
 ///       stage-1 neighbourhood (`Sharp_feature_scales::candidate_radius`; larger residuals come
-///       from outliers)}
+///       from outliers); on noisy clouds at most 1.3 times the median residual (the mean then
+///       also holds the fits of smooth surfaces that bend within a neighbourhood, and can rise
+///       above the residuals of the creases)}
 ///     \cgalParamExtra{a negative value selects the default; the threshold used is stored in
 ///       `candidates.scales.residual_threshold`}
 ///   \cgalParamNEnd

@@ -65,7 +65,7 @@ namespace CGAL {
 ///       exceeds it is a candidate}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{the mean residual of the points whose residual is at most the radius of a
-///       stage-1 neighbourhood}
+///       stage-1 neighbourhood; on noisy clouds at most 1.3 times the median residual}
 ///     \cgalParamExtra{read by stage 1 (`compute_candidate_points()`); a negative value selects
 ///       the default}
 ///   \cgalParamNEnd

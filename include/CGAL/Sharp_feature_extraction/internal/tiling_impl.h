@@ -60,9 +60,9 @@ inline double halo_width(const Scales& scales, unsigned int smoothing_passes)
   return projection_reach + smoothing_reach;
 }
 
-/// The candidate threshold of stage 1 (the mean residual of the points whose residual is at
-/// most the radius of a stage-1 neighbourhood) on the regular subsample that the scale
-/// estimation measures, instead of every point: a value every tile can share.
+/// The candidate threshold of stage 1 (see `automatic_residual_threshold()`) on the regular
+/// subsample that the scale estimation measures, instead of every point: a value every tile
+/// can share.
 template <typename ConcurrencyTag>
 bool sampled_residual_threshold(const Indexed_input& input, const Scales& scales, int degree, Progress progress,
                                 double& threshold)
@@ -82,7 +82,7 @@ bool sampled_residual_threshold(const Indexed_input& input, const Scales& scales
        }
      }))
     return false;
-  threshold = mean_residual_of_surface_fits(residuals, scales.candidate_radius);
+  threshold = automatic_residual_threshold(residuals, scales);
   return true;
 }
 
