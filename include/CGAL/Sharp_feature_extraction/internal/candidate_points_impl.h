@@ -117,6 +117,10 @@ constexpr double rmls_tolerance_per_spacing = 0.05;
 constexpr std::size_t spacing_neighbor = 6;
 /// At most this many points are used to estimate spacing, noise and neighbourhood radii.
 constexpr std::size_t scale_sample_size = 20000;
+/// The stride of the regular sample of at most about `scale_sample_size` of `n` values: the
+/// scale samples, the tiled threshold's residuals and the median of the threshold all take every
+/// this-many-th point in the spatial order, so they sample the same points.
+inline std::size_t scale_sample_stride(std::size_t n) { return (std::max<std::size_t>)(1, n / scale_sample_size); }
 /// Smallest neighbourhood size: a quadric jet has 6 coefficients, and a fit needs more points.
 constexpr std::size_t minimum_neighbors = 7;
 /// Stage-2 neighbourhoods hold this many times the points of stage-1 ones: the forward search
@@ -234,7 +238,7 @@ bool measure_samples(const std::vector<Vec3>& points, const Point_index& index, 
                      Scale_samples& samples)
 {
   const std::size_t n = points.size();
-  samples.stride = (std::max<std::size_t>)(1, n / scale_sample_size);
+  samples.stride = scale_sample_stride(n);
   const std::size_t count = (n + samples.stride - 1) / samples.stride;
   for(std::vector<double>* v :
       {&samples.spacing, &samples.tangent_spacing, &samples.rms_residual, &samples.candidate_radius, &samples.rmls_radius})
@@ -458,7 +462,7 @@ constexpr double maximum_threshold_per_median_residual = 1.3;
 /// (the threshold needs no more, and the sample keeps the cost of a large cloud small).
 inline double sampled_median(const std::vector<double>& values)
 {
-  const std::size_t stride = (std::max<std::size_t>)(1, values.size() / scale_sample_size);
+  const std::size_t stride = scale_sample_stride(values.size());
   std::vector<double> sample;
   sample.reserve(values.size() / stride + 1);
   for(std::size_t i = 0; i < values.size(); i += stride)

@@ -71,7 +71,7 @@ bool sampled_residual_threshold(const Indexed_input& input, const Scales& scales
   threshold = 0;
   if(!(scales.spacing > 0) || scales.candidate_neighbors == 0)
     return progress.report(1.);
-  const std::size_t stride = (std::max<std::size_t>)(1, points.size() / scale_sample_size);
+  const std::size_t stride = scale_sample_stride(points.size());
   std::vector<double> residuals((points.size() + stride - 1) / stride, 0.);
   if(!parallel_blocks<ConcurrencyTag>(residuals.size(), progress, [&](std::size_t first, std::size_t last) {
        std::vector<std::size_t> neighbors;
