@@ -116,7 +116,7 @@ TEST_CASE("LAS 1.2 to 1.4, point formats 0 to 10: the positions come back within
     }
 }
 
-TEST_CASE("LAS points read in chunks of any size are the same; seek moves to any point", "[io][las]")
+TEST_CASE("LAS points read in chunks of any size are the same, and seek moves to any point", "[io][las]")
 {
   const std::string bytes = las_bytes(sample_points());
   const std::vector<double> whole = read_all(bytes, 1000);

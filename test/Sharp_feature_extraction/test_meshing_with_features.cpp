@@ -390,7 +390,7 @@ TEST_CASE("a curve on a wall or across a gap narrower than the clearance (Mesh_3
 
 TEST_CASE("two curves that pass 2 s apart, on either side of the surface, cross once moved onto it "
           "(Mesh_3 fails on such curves): they are split where they cross, meet at one shared point, "
-          "and pass the Mesh_3 check; neither is dropped",
+          "and pass the Mesh_3 check, and neither is dropped",
           "[meshing]")
 {
   namespace mp = CGAL::Sharp_feature_extraction::internal::mesh_polylines;

@@ -215,8 +215,6 @@ TEST_CASE("candidate cells hold every candidate once, the best placed first", "[
     }
     CHECK((high - low).maxCoeff() < cell);
   }
-  // Size 0: one cell per candidate.
-  CHECK(sfe::group_candidates(points, candidates, residuals, 0.).size() == candidates.size());
 }
 
 TEST_CASE("surfaces found around one candidate serve a neighbour only where they explain its neighbourhood",

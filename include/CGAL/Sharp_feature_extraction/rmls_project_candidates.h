@@ -29,8 +29,14 @@ namespace CGAL {
 /// every candidate of the cell that those surfaces explain (it lies on one of them, and so do
 /// more than 90% of the searched points around it) is projected onto them; the others search
 /// their own. Every candidate still gives its own edge point, for about one forward search per
-/// cell. On noisy data every candidate searches its own surfaces, so that its edge point is an
-/// independent estimate for the smoothing of stage 3 to average.
+/// cell. On noisy data (noise above 5% of the spacing) the cells are 1.5 RMLS tolerances wide,
+/// the candidates of a cell search their own surfaces in turn until one finds some, and that
+/// one alone is projected: the neighbourhoods of candidates that close hold mostly the same
+/// points, so their edge points would repeat one estimate. Near a corner or a shallow crease
+/// (within the corner radius of a candidate whose search found three surfaces, or two whose
+/// normals are less than 40 degrees apart) every candidate searches its own surfaces and is
+/// projected: a corner gets its group of corner points, and a shallow crease, where few
+/// searches succeed under noise, every edge point they give.
 ///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which
