@@ -1174,13 +1174,13 @@ public:
   First_search project_first(std::size_t cell)
   {
     First_search first;
-    bool found = false;
-    while(!found && first.searched < m_cells.size(cell))
-      found = search_and_project(cell, first.searched++, first.corner_or_shallow);
-    if(found)
+    std::size_t found = 0;
+    while(found == 0 && first.searched < m_cells.size(cell))
+      found = search_and_project(cell, first.searched++);
+    if(found > 0)
     {
       const Projection& projection = m_projections[m_cells.start[cell] + first.searched - 1];
-      first.corner_or_shallow = first.corner_or_shallow
+      first.corner_or_shallow = found >= 3
         || (projection.has_edge && angle_between(projection.edge.normals[0], projection.edge.normals[1]) < shallow_crease_angle);
     }
     return first;
@@ -1192,9 +1192,8 @@ public:
   /// and a shallow crease every edge point that its searches give.
   void project_rest(std::size_t cell, const First_search& first)
   {
-    bool corner = false;
     for(std::size_t rank = first.searched; rank < m_cells.size(cell); ++rank)
-      search_and_project(cell, rank, corner);
+      search_and_project(cell, rank);
   }
 
 private:
@@ -1245,19 +1244,16 @@ private:
   }
 
   // The candidate of rank `rank` in `cell` searches its own surfaces and is projected (onto
-  // the ends of parallel sides if it finds fewer than two). Returns whether it found surfaces;
-  // `corner` becomes true if it found three or more.
-  bool search_and_project(std::size_t cell, std::size_t rank, bool& corner)
+  // the ends of parallel sides if it finds fewer than two). Returns the number of surfaces it
+  // found (0 if fewer than two).
+  std::size_t search_and_project(std::size_t cell, std::size_t rank)
   {
     const std::vector<const Rmls_surface*> surfaces = surfaces_around(m_cells.member(cell, rank));
     if(surfaces.empty())
-    {
       project_on_parallel_sides(cell, rank);
-      return false;
-    }
-    project(cell, rank, surfaces);
-    corner = corner || surfaces.size() >= 3;
-    return true;
+    else
+      project(cell, rank, surfaces);
+    return surfaces.size();
   }
 
   void project(std::size_t cell, std::size_t rank, const std::vector<const Rmls_surface*>& surfaces)
