@@ -30,9 +30,10 @@ namespace CGAL {
 /// more than 90% of the searched points around it) is projected onto them; the others search
 /// their own. Every candidate still gives its own edge point, for about one forward search per
 /// cell. On noisy data (noise above 5% of the spacing) the cells are 1.5 RMLS tolerances wide,
-/// the candidates of a cell search their own surfaces in turn until one finds some, and that
-/// one alone is projected: the neighbourhoods of candidates that close hold mostly the same
-/// points, so their edge points would repeat one estimate. Near a corner or a shallow crease
+/// the candidates of a cell search their own surfaces in turn until one gives an edge point
+/// within two cell sides of itself, and only those that found surfaces are projected: the
+/// neighbourhoods of candidates that close hold mostly the same points, so their edge points
+/// would repeat one estimate. Near a corner or a shallow crease
 /// (within the corner radius of a candidate whose search found three surfaces, or two whose
 /// normals are less than 40 degrees apart) every candidate searches its own surfaces and is
 /// projected: a corner gets its group of corner points, and a shallow crease, where few
