@@ -575,7 +575,10 @@ private:
         (std::max<std::size_t>)(1, std::size_t(Constants::batch_fraction * double(members.size()))));
       if(batch > 0)
       {
-        sort_smallest(m_ranked, batch);
+        // The batch is the `batch` best-fitting points, in any order: the members are sorted
+        // when the growth ends.
+        if(batch < m_ranked.size())
+          std::nth_element(m_ranked.begin(), m_ranked.begin() + std::ptrdiff_t(batch - 1), m_ranked.end());
         for(std::size_t j = 0; j < batch; ++j)
         {
           members.push_back(m_ranked[j].second);
