@@ -33,11 +33,11 @@ namespace CGAL {
 /// the candidates of a cell search their own surfaces in turn until one gives an edge point
 /// within two cell sides of itself, and only those that found surfaces are projected: the
 /// neighbourhoods of candidates that close hold mostly the same points, so their edge points
-/// would repeat one estimate. Near a corner or a shallow crease
-/// (within the corner radius of a candidate whose search found three surfaces, or two whose
-/// normals are less than 40 degrees apart) every candidate searches its own surfaces and is
-/// projected: a corner gets its group of corner points, and a shallow crease, where few
-/// searches succeed under noise, every edge point they give.
+/// would repeat one estimate. Near a corner or a shallow crease (within the corner radius of a
+/// candidate whose search found three surfaces, or two whose normals are less than 40 degrees
+/// apart) every candidate searches its own surfaces and is projected: a corner gets its group
+/// of corner points, and a shallow crease, where few searches succeed under noise, every edge
+/// point they give.
 ///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which
