@@ -33,11 +33,14 @@ namespace CGAL {
 /// the candidates of a cell search their own surfaces in turn until one gives an edge point
 /// within two cell sides of itself, and only those that found surfaces are projected: the
 /// neighbourhoods of candidates that close hold mostly the same points, so their edge points
-/// would repeat one estimate. Near a corner or a shallow crease (within the corner radius of a
-/// candidate whose search found three surfaces, or two whose normals are less than 40 degrees
-/// apart) every candidate searches its own surfaces and is projected: a corner gets its group
-/// of corner points, and a shallow crease, where few searches succeed under noise, every edge
-/// point they give.
+/// would repeat one estimate. A candidate does not search when the search before it in its cell
+/// found one plane and no crease, and that plane holds all but 3% of the points around the
+/// candidate within the tolerance: its own search would find that plane alone too. Near a
+/// corner or a shallow crease (within the corner radius of a candidate whose search found three
+/// surfaces, or two whose normals are less than 40 degrees apart) the candidates that this
+/// first pass did not reach also search their own surfaces and are projected: a corner gets its
+/// group of corner points, and a shallow crease, where few searches succeed under noise, every
+/// edge point they give.
 ///
 /// \param points the input points (the same range as given to `compute_candidate_points()`).
 /// \param candidates the output of `compute_candidate_points()`: its indices, residuals (which

@@ -1157,7 +1157,8 @@ constexpr double shallow_crease_angle = 40;
 /// What the first pass found in a cell of noisy data (see `Cell_projector::project_first()`).
 struct First_search
 {
-  /// Candidates searched: those of rank 0 to `searched - 1` in the cell.
+  /// Candidates that the first pass went through: those of rank 0 to `searched - 1` in the
+  /// cell, each searched or skipped (see `max_lone_plane_misfit`).
   std::size_t searched = 0;
   /// The rank of the last of them whose search found surfaces (meaningful if `corner_or_shallow`).
   std::size_t last_found = 0;
@@ -1244,9 +1245,10 @@ public:
   }
 
   /// Noisy data, second pass near a corner or a shallow crease: every candidate of `cell` that
-  /// `first` did not search (see `project_first()`) searches its own surfaces and is projected,
-  /// so that a corner gets the group of corner points that `group_corner_points()` asks for,
-  /// and a shallow crease every edge point that its searches give.
+  /// `first` did not go through (see `project_first()`; not those it skipped) searches its own
+  /// surfaces and is projected, so that a corner gets the group of corner points that
+  /// `group_corner_points()` asks for, and a shallow crease every edge point that its searches
+  /// give.
   void project_rest(std::size_t cell, const First_search& first)
   {
     for(std::size_t rank = first.searched; rank < m_cells.size(cell); ++rank)
