@@ -290,6 +290,19 @@ inline Shape capped_cylinder()
   return s;
 }
 
+/// The side of a cylinder of radius `radius` and height 1, without caps: smooth everywhere, no
+/// crease (its borders are not creases).
+inline Shape open_cylinder(double radius)
+{
+  Shape s;
+  s.name = "open cylinder";
+  const double h = 1;
+  s.curved.push_back({2 * pi * radius * h, 0, Vec(0, 0, 0), Vec(0, 0, 1), radius, h});
+  s.bbox_min = Vec(-radius, -radius, 0);
+  s.bbox_max = Vec(radius, radius, h);
+  return s;
+}
+
 /// A sphere of radius 0.5: smooth everywhere, no crease.
 inline Shape sphere()
 {
