@@ -16,9 +16,10 @@ namespace CGAL {
 /// From a regular subsample of at most 20,000 points: the spacing s (mean distance to the 6th
 /// nearest neighbour), the noise (median RMS residual of the jets fitted to the 36 nearest
 /// points; when a neighbourhood 5 noise scales wide holds more points, the lower quartile of
-/// the RMS residuals of the jets fitted to that many, repeated while it grows; on the means
-/// below, also until a widening raises it by a larger factor than the one before, which reads
-/// curvature, not noise). From these:
+/// the RMS residuals of the jets fitted to that many, at most 400 of them spread over up to
+/// 4,000 nearest, repeated while it grows; on the means below, or beyond 400 points, also until
+/// a widening raises it by a larger factor than the one before, which reads curvature, not
+/// noise). From these:
 /// the stage-1 neighbourhood size (36 points, grown with the square of noise/s above 0.25 for
 /// the noise over 36 points, or above 0.3 for the widened one if that asks for more, at most
 /// 100; where the noise asks for k > 100, the cloud is thinned, by a hash of each point's

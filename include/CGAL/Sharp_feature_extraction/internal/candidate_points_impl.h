@@ -94,12 +94,22 @@ constexpr double noise_fit_radius_per_noise = 5;
 /// the lower quartile leaves those neighbourhoods out (0.84 to 1.03 of the true noise on the 9
 /// benchmark parts at 1% and 2% dB).
 constexpr double widened_noise_quantile = 0.25;
-/// The widened neighbourhoods hold at most as many points as the largest stage-1 one: wider
-/// ones reach the geometry of the small parts, whose curvature a jet cannot follow even in the
-/// lower quartile (4 times as many read 2.0, 1.15 and 1.24 times the true noise on CGAL's
-/// pinion, rotor and spool at 2% dB noise, and lost their creases: mean F1 at 2% dB, eps 1% dB,
-/// 0.50 -> 0.41 on the 9 benchmark parts).
+/// The widened fits hold at most as many points as the largest stage-1 neighbourhood: a
+/// wider neighbourhood is fitted on every m-th of its points in the order of distance, which
+/// keeps its radius and its noise at a bounded cost.
 constexpr std::size_t maximum_noise_fit_neighbors = maximum_candidate_neighbors;
+/// On the points, the widened neighbourhoods hold at most this many points. This bound was once
+/// `maximum_noise_fit_neighbors`, chosen at 100k points, where it bounded the radius: wider
+/// neighbourhoods reached the geometry of the small parts (4 times as many read 2.0, 1.15 and
+/// 1.24 times the true noise on CGAL's pinion, rotor and spool at 2% dB noise; `on_means` in
+/// `widen_noise_estimate()` now stops that). At 5 times the density, 400 points spanned 0.6 of
+/// the radius the noise asked for, the estimate saturated low (fandisk, 500k points, 2% dB
+/// noise: 0.0089 for a true 0.0130), and so did the stage-1 neighbourhoods (1,099 points where
+/// 5 x 692 kept the radius of 100k points): F1 at eps 1% dB 0.16, against 0.69 at 100k. With
+/// this bound: 0.0126 and 0.61; fandisk, pinion, rotor and spool at 500k points, seed 4: 2%
+/// noise 0.188 -> 0.358, 1% noise 0.7346 -> 0.7356; the 9 parts at 100k points, seeds 1 and 2:
+/// 2% noise 0.5742 -> 0.5830, 0.5% and 1% noise identical.
+constexpr std::size_t maximum_noise_search_neighbors = 10 * maximum_noise_fit_neighbors;
 /// The widened fits are made around every this-many-th sample: their lower quartile needs no
 /// more than the 2,000 or so that remain, and a widened fit costs up to 45 times a fit of the
 /// 36 nearest points.
@@ -274,29 +284,38 @@ bool measure_samples(const std::vector<Vec3>& points, const Point_index& index, 
 /// The noise measured over neighbourhoods at least `noise_fit_radius_per_noise` noise scales
 /// wide (see there), starting from `scales.noise` measured over `fit_size` points whose median
 /// radius is `fit_radius`: the neighbourhoods widen until their median radius reaches that
-/// width (or they stop growing). With `on_means` (the points are the means of a thinned cloud,
-/// see `estimate_scales()`), a widening that raises the estimate by a larger factor than the
-/// widening before it is not kept, and the widening stops there.
+/// width (or they stop growing, or hold `maximum_noise_search_neighbors` points; on means,
+/// `maximum_noise_fit_neighbors`, which span twice the radius the noise asked for). With
+/// `on_means` (the points are the means of a thinned cloud, see `estimate_scales()`), or once
+/// the neighbourhoods hold more than `maximum_noise_fit_neighbors` points, a widening that
+/// raises the estimate by a larger factor than the widening before it is not kept, and the
+/// widening stops there.
 ///
 /// Why: the means are thinned so that their neighbourhoods already span the radius that the
 /// noise measured on the points asked for, and there a widening that reaches deeper into the
 /// noise band raises the estimate less than the one before. Curvature that a jet cannot follow
 /// does the opposite: its residual grows faster than the radius, and the radius follows the
 /// estimate, so the loop feeds on itself. A rod whose radius is 1.5 times the noise radius, at
-/// 2% dB noise and 30,000 points, read 2.2 times the noise along the normal (1.10 with this
+/// 2% dB noise and 30,000 points, read 2.2 times the noise along the normal (1.05 with this
 /// rule); CGAL's pinion at 2% dB noise, whose means read 0.0252, 0.0274, 0.0305, ... up to
 /// 0.0696 (factors 1.09, 1.11, 1.14, 1.16, 1.21, 1.28; the points' own estimate was 0.0274),
 /// took whole teeth into the RMLS tolerance and lost every curve (F1 0 at eps 1% dB, 0.05 with
 /// the rule). On the points themselves the first widenings may raise the estimate by growing
 /// factors, from the 36 nearest points deep inside a noise band several spacings thick (a
 /// cubic sheet at 3% dB noise and 100k points: 1.235 then 1.244; stopping there left stage-1
-/// neighbourhoods 2.4 times smaller), so there the rule does not apply.
+/// neighbourhoods 2.4 times smaller), so there the rule applies only beyond the size at which
+/// the points' neighbourhoods held the band at 100k points (without it, pinion's points read
+/// 0.0274 at 373 points, then factors 1.13, 1.15, 1.18, 1.23, 1.30 up to 2,602 points, and
+/// pinion lost every curve at 2% noise and 100k points again; spool, whose widening it also
+/// stops, went 0.539 -> 0.428).
 template <typename ConcurrencyTag>
 bool widen_noise_estimate(const std::vector<Vec3>& points, const Point_index& index, int degree,
                           std::size_t fit_size, double fit_radius, bool on_means, const Scale_samples& samples,
                           Progress progress, Scales& scales)
 {
-  const std::size_t largest = (std::min)(points.size(), maximum_noise_fit_neighbors);
+  const std::size_t largest_fit = (std::min)(points.size(), maximum_noise_fit_neighbors);
+  const std::size_t largest =
+    (std::min)(points.size(), on_means ? maximum_noise_fit_neighbors : maximum_noise_search_neighbors);
   const std::size_t stride = samples.stride * widened_sample_stride;
   const std::size_t count = (samples.spacing.size() + widened_sample_stride - 1) / widened_sample_stride;
   std::vector<double> rms_residual(count), radius(count);
@@ -315,19 +334,26 @@ bool widen_noise_estimate(const std::vector<Vec3>& points, const Point_index& in
     k = wider;
     Progress step = progress.sub(double(widening) / maximum_widenings, double(widening + 1) / maximum_widenings);
     if(!parallel_blocks<ConcurrencyTag>(count, step, [&](std::size_t first, std::size_t last) {
-         std::vector<std::size_t> neighbors;
+         std::vector<std::size_t> neighbors, fitted(largest_fit);
          for(std::size_t s = first; s < last; ++s)
          {
            const Vec3& p = points[s * stride];
            index.nearest(p, k, neighbors);
            radius[s] = (points[neighbors.back()] - p).norm();
-           rms_residual[s] = fit_residuals(points, neighbors, degree).rms_residual;
+           if(neighbors.size() > largest_fit)
+           {
+             for(std::size_t j = 0; j < largest_fit; ++j)
+               fitted[j] = neighbors[j * neighbors.size() / largest_fit];
+             rms_residual[s] = fit_residuals(points, fitted, degree).rms_residual;
+           }
+           else
+             rms_residual[s] = fit_residuals(points, neighbors, degree).rms_residual;
          }
        }))
       return false;
     const double widened_noise = quantile(rms_residual, widened_noise_quantile);
     const double growth = widened_noise / scales.noise;
-    if(on_means && growth > last_growth)
+    if((on_means || k > largest_fit) && growth > last_growth)
       break;
     last_growth = growth;
     scales.noise = widened_noise;
