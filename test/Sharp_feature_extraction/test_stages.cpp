@@ -392,54 +392,40 @@ TEST_CASE("scales: where the noise calls for neighbourhoods of more than 100 poi
   CHECK(scales.candidate_radius == Approx(whole_cloud_radius).epsilon(tolerance));
 }
 
-TEST_CASE("scales: at 4 times the density and the same noise, the stage-1 radius keeps most of its size",
+TEST_CASE("scales: at 4 and 16 times the density and the same noise, the stage-1 radius keeps most of its size",
           "[stages][scales]")
 {
-  // A plane with 2% dB noise at 10,000 and at 40,000 points (0.9 and 1.8 spacings of noise
-  // RMS). Noise along the normal inflates the distances between neighbours in space, the more
-  // so the denser the cloud, and neighbourhoods grown with the noise relative to that spacing
-  // had 0.79 of the radius at the higher density. With the inflation capped (see
-  // `maximum_spacing_inflation`) the radius keeps 0.92 of it; the sparse cloud, whose spacing
-  // is inflated less than the cap, keeps its size.
-  const double minimum_radius_kept = 0.85;
-  const std::size_t sparse = 10000, density_factor = 4;
-  const double noise = 0.02;
-  double radius[2];
-  std::size_t size[2];
-  for(int dense = 0; dense < 2; ++dense)
+  // A plane with 2% dB noise at 10,000 points, and at 4 and 16 times as many.
+  // - At 40,000 points (0.9 and 1.8 spacings of noise RMS): noise along the normal inflates the
+  //   distances between neighbours in space, the more so the denser the cloud, and
+  //   neighbourhoods grown with the noise relative to that spacing had 0.79 of the radius at the
+  //   higher density. With the inflation capped (see `maximum_spacing_inflation`) the radius
+  //   keeps 0.92 of it; the sparse cloud, whose spacing is inflated less than the cap, keeps its
+  //   size.
+  // - At 160,000 points: the noise is measured by fits widened until they span 5 times the
+  //   estimate; with at most 400 points per fit, those spanned about 0.6 of that, the estimate
+  //   stayed low and so did the neighbourhoods: 0.63 of the radius. Fits that spread their 400
+  //   points over up to 4,000 nearest keep 0.76 of it.
+  struct Denser_cloud
   {
-    const std::vector<Point_3> points =
-      to_points<Point_3>(sample(square_plane(), dense ? density_factor * sparse : sparse, noise));
+    std::size_t density_factor;
+    double minimum_radius_kept;
+  };
+  const std::size_t sparse = 10000;
+  const double noise = 0.02;
+  auto stage1_radius_and_size = [noise](std::size_t n) {
+    const std::vector<Point_3> points = to_points<Point_3>(sample(square_plane(), n, noise));
     const CGAL::Sharp_feature_scales<double> scales = CGAL::Sharp_feature_extraction_context<K>(points).scales();
-    radius[dense] = scales.candidate_radius;
-    size[dense] = std::size_t(double(scales.candidate_neighbors) / scales.search_fraction);
-  }
-  INFO("stage-1 radius " << radius[0] << " (" << size[0] << " points) at " << sparse << " points, " << radius[1]
-       << " (" << size[1] << ") at " << density_factor * sparse);
-  CHECK(radius[1] >= minimum_radius_kept * radius[0]);
-}
-
-TEST_CASE("scales: at 16 times the density and the same noise, the stage-1 radius keeps most of its size",
-          "[stages][scales]")
-{
-  // A plane with 2% dB noise at 10,000 and at 160,000 points. The noise is measured by fits
-  // widened until they span 5 times the estimate; with at most 400 points per fit, those
-  // spanned about 0.6 of that at 160,000 points, the estimate stayed low and so did the
-  // neighbourhoods: 0.63 of the radius at 10,000 points. Fits that spread their 400 points
-  // over up to 4,000 nearest keep 0.76 of it.
-  const double minimum_radius_kept = 0.7;
-  const std::size_t sparse = 10000, density_factor = 16;
-  const double noise = 0.02;
-  double radius[2];
-  for(int dense = 0; dense < 2; ++dense)
+    return std::pair{scales.candidate_radius, std::size_t(double(scales.candidate_neighbors) / scales.search_fraction)};
+  };
+  const auto [sparse_radius, sparse_size] = stage1_radius_and_size(sparse);
+  for(const Denser_cloud& denser : {Denser_cloud{4, 0.85}, Denser_cloud{16, 0.7}})
   {
-    const std::vector<Point_3> points =
-      to_points<Point_3>(sample(square_plane(), dense ? density_factor * sparse : sparse, noise));
-    radius[dense] = CGAL::Sharp_feature_extraction_context<K>(points).scales().candidate_radius;
+    const auto [radius, size] = stage1_radius_and_size(denser.density_factor * sparse);
+    INFO("stage-1 radius " << sparse_radius << " (" << sparse_size << " points) at " << sparse << " points, "
+         << radius << " (" << size << ") at " << denser.density_factor * sparse);
+    CHECK(radius >= denser.minimum_radius_kept * sparse_radius);
   }
-  INFO("stage-1 radius " << radius[0] << " at " << sparse << " points, " << radius[1] << " at "
-       << density_factor * sparse);
-  CHECK(radius[1] >= minimum_radius_kept * radius[0]);
 }
 
 TEST_CASE("stage 1: on an exact cube, residuals are high within one spacing of the edges and low far from them",

@@ -101,8 +101,9 @@ constexpr std::size_t maximum_noise_fit_neighbors = maximum_candidate_neighbors;
 /// On the points, the widened neighbourhoods hold at most this many points. This bound was once
 /// `maximum_noise_fit_neighbors`, chosen at 100k points, where it bounded the radius: wider
 /// neighbourhoods reached the geometry of the small parts (4 times as many read 2.0, 1.15 and
-/// 1.24 times the true noise on CGAL's pinion, rotor and spool at 2% dB noise; `on_means` in
-/// `widen_noise_estimate()` now stops that). At 5 times the density, 400 points spanned 0.6 of
+/// 1.24 times the true noise on CGAL's pinion, rotor and spool at 2% dB noise; beyond
+/// `maximum_noise_fit_neighbors` points, the rule of `widen_noise_estimate()` on widenings that
+/// raise the estimate by growing factors now stops that). At 5 times the density, 400 points spanned 0.6 of
 /// the radius the noise asked for, the estimate saturated low (fandisk, 500k points, 2% dB
 /// noise: 0.0089 for a true 0.0130), and so did the stage-1 neighbourhoods (1,099 points where
 /// 5 x 692 kept the radius of 100k points): F1 at eps 1% dB 0.16, against 0.69 at 100k. With
