@@ -122,9 +122,10 @@ void check_corner_valences(const Extraction& x, std::size_t valence)
     CHECK(corner.incident_polylines.size() == valence);
 }
 
-void check_sphere(double noise)
+/// `n` points of `shape`, a smooth surface, with `noise`: no curve, no corner.
+void check_no_curve(const Shape& shape, double noise, std::size_t n)
 {
-  const Extraction x = extract(sphere(), noise, 0, number_of_points * 2 / 3);
+  const Extraction x = extract(shape, noise, 0, n);
   CHECK(result_is_finite(x.result));
   CHECK(x.result.network.polylines.empty());
   CHECK(x.result.network.corners.empty());
@@ -198,14 +199,22 @@ TEST_CASE("exact shapes with 5% outliers uniform in their bounding box: the 30-d
 
 TEST_CASE("an exact sphere yields no curve and no corner", "[shapes][sphere]")
 {
-  check_sphere(0);
+  check_no_curve(sphere(), 0, number_of_points * 2 / 3);
 }
 
 // Noisy shapes: what the library does today on these samples (see `Expected`).
 
 TEST_CASE("a sphere with 0.5% noise yields no curve and no corner", "[shapes][sphere][noise]")
 {
-  check_sphere(noisy);
+  check_no_curve(sphere(), noisy, number_of_points * 2 / 3);
+}
+
+TEST_CASE("an open cylinder of radius 6% dB with 0.5% noise yields no curve and no corner", "[shapes][cylinder][noise]")
+{
+  // Over a stage-2 neighbourhood two planes fit the cylinder about as well as a quadric: the
+  // split of a plane across a crease made 11 curves on this sample until the twice wider split
+  // had to confirm it.
+  check_no_curve(open_cylinder(0.06), noisy, number_of_points);
 }
 
 // Expected{curves min, max; closed min, max; corners min, max; creases with one curve,
@@ -217,13 +226,14 @@ TEST_CASE("a unit cube yields its 12 creases and 8 corners at 0.5% and at 1% noi
   check(unit_cube(), very_noisy, Expected{12, 12, 0, 0, 8, 8, 12, 0, 0.009, 0.0033, 0.97, 0.008, 30});
 }
 
-TEST_CASE("a chamfered box yields 13 polylines (13 of its 15 creases as one curve) at 0.5% noise, 9 at 1%",
+TEST_CASE("a chamfered box yields 13 polylines (13 of its 15 creases as one curve) at 0.5% noise, 12 at 1%",
           "[shapes][chamfer][noise]")
 {
-  // Corners of the chamfer are missed: the nearest found corner is 41% (0.5%) and 42% (1%)
-  // dB away. At 1% noise the chamfer's six short creases are lost.
+  // Corners of the chamfer are missed: the nearest found corner is 41% (0.5%) and 15% (1%)
+  // dB away. At 1% noise three of the chamfer's six short 45-degree creases are lost (all six
+  // before the split off one plane took the points beyond its tolerance, 9 polylines).
   check(chamfered_box(), noisy, Expected{13, 13, 0, 0, 8, 8, 13, 2, 0.021, 0.0018, 0.9, 0.45, 90});
-  check(chamfered_box(), very_noisy, Expected{9, 9, 0, 0, 6, 6, 9, 0, 0.009, 0.003, 0.85, 0.45, 90});
+  check(chamfered_box(), very_noisy, Expected{12, 12, 0, 0, 8, 8, 12, 0, 0.009, 0.003, 0.9, 0.2, 90});
 }
 
 TEST_CASE("a stepped box yields its 18 creases and 12 corners at 0.5% and at 1% noise", "[shapes][step][noise]")
@@ -240,23 +250,27 @@ TEST_CASE("a capped cylinder yields its 2 rims as loops at 0.5% and at 1% noise"
   check(capped_cylinder(), very_noisy, Expected{2, 2, 2, 2, 0, 0, 2, 0, 0.008, 0.003, 0.9, 0, 22});
 }
 
-TEST_CASE("two planes with 0.5% noise: one polyline at 90 degrees, a short piece at 30, none on the 30-degree wedge",
+TEST_CASE("two planes with 0.5% noise: one polyline at 90 degrees, one along 80% of the crease at 30, none on the "
+          "30-degree wedge",
           "[shapes][planes][noise]")
 {
   const std::size_t n = number_of_points * 2 / 3;
   check(two_planes(90), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.0045, 0.002, 0.97, 0, 15}, n);
-  check(two_planes(30), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.005, 0.002, 0.15, 0, 12}, n);
+  // 19% of the 30-degree crease before its split took the points beyond the tolerance.
+  check(two_planes(30), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.005, 0.002, 0.75, 0, 12}, n);
   check(two_planes(150), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.005, 0.002, 0, 0, 90}, n);
 }
 
-TEST_CASE("a sphere cut by a plane, with 0.5% noise: the 50-degree rim is one loop, the shallower ones partly found",
+TEST_CASE("a sphere cut by a plane, with 0.5% noise: the 40- and 50-degree rims are loops, the 35-degree rim one "
+          "open curve, the 30-degree rim a third covered",
           "[shapes][shallow][noise]")
 {
-  // At 35 and 40 degrees the rim is one open piece, without a corner: the spike where it
-  // turned sharply and back (an edge point from the noise beside the rim) is dropped instead of
-  // splitting it there (before, two pieces and a spurious corner).
-  check(truncated_sphere(30), noisy, Expected{0, 0, 0, 0, 0, 0, 0, 0, 0.006, 0.004, 0, 0, 15});
-  check(truncated_sphere(35), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.016, 0.005, 0.55, 0, 28});
-  check(truncated_sphere(40), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.012, 0.003, 0.8, 0, 33});
-  check(truncated_sphere(50), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.007, 0.002, 0.97, 0, 27});
+  // Before the split off one plane took the points beyond its tolerance: no curve at 30
+  // degrees, 55% at 35, and one open curve at 40. At 35 degrees the rim is one open piece,
+  // without a corner: the spike where it turned sharply and back (an edge point from the noise
+  // beside the rim) is dropped instead of splitting it there.
+  check(truncated_sphere(30), noisy, Expected{1, 3, 0, 0, 0, 0, 0, 3, 0.014, 0.0035, 0.3, 0, 15});
+  check(truncated_sphere(35), noisy, Expected{1, 1, 0, 0, 0, 0, 1, 0, 0.012, 0.003, 0.7, 0, 20});
+  check(truncated_sphere(40), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.012, 0.003, 0.97, 0, 20});
+  check(truncated_sphere(50), noisy, Expected{1, 1, 1, 1, 0, 0, 1, 0, 0.008, 0.002, 0.97, 0, 20});
 }

@@ -94,6 +94,20 @@ struct Forward_search_constants
   /// parts at 200k points and 1% noise from 0.816 to 0.779 (2 to 4 times as many edge points,
   /// less precise); with it, to 0.817.
   static constexpr double split_residual_ratio = 0.7;
+  /// A crease split off one plane (see `find_surfaces()`) stands only if the points nearest the
+  /// candidate, this many times as many as its stage-2 neighbourhood (twice its radius), split
+  /// too, along a line that passes within the candidate's stage-1 radius. Across a shallow
+  /// crease a quadric bends and fits nearly as well as the two planes, and on a surface curved
+  /// at about twice the radius two planes fit about as well as a quadric: at 0.5% dB noise and
+  /// 30,000 points the sides' planes beat the quadric by 5 to 40 noise variances (sums of
+  /// squared heights) across creases of 30 and 35 degrees and by 0 to 20 inside a cylinder of
+  /// 6% dB radius, which then gave 12 to 24 curves. Twice as wide, the quadric's misfit across
+  /// the crease grows as the fourth power of the radius (times the points), the planes' misfit
+  /// on the cylinder as the sixth: the wider split rejected 98% of the cylinder's splits and
+  /// none of the creases'. Where the wider neighbourhood reaches across a bore, its two planes
+  /// are the bore's opposite walls and meet far from the candidate: without the line's bound,
+  /// CGAL's joint at 1% dB noise had curves inside its bore (F1 0.970 -> 0.933; with it, 0.963).
+  static constexpr std::size_t split_confirmation_neighbors_factor = 4;
 };
 
 /// One smooth surface found by the forward search.
@@ -156,6 +170,10 @@ public:
   /// sizes of the scales: 1, or `sampled_fraction / search_fraction` once `local` holds the
   /// sampled points that the means stand for (see `refine_on_sampled_points()`).
   double points_per_counted_point = 1;
+  /// Whether the last `find_surfaces()` on this search split its two planes off one plane (see
+  /// `split_across_crease()`): such a crease must stand in a wider neighbourhood too (see
+  /// `Forward_search_constants::split_confirmation_neighbors_factor`).
+  bool split_off_crease = false;
 
   /// The centre of the neighbourhood: its point nearest to the candidate (the candidate itself,
   /// unless `local` holds the sampled points that the means stand for).
@@ -261,6 +279,30 @@ public:
         s->centroid = centroid_of(s->members);
       }
     }
+  }
+
+  /// The members of `kept`, one of `surfaces`, and the points of `local` that no surface took,
+  /// with their least-squares plane, in `spanning`; false if they determine no plane. Across a
+  /// crease that the search did not part, the far parts of its sides lie beyond the tolerance
+  /// of the plane it grew (the points of the other surfaces, parallel to `kept`, may be the
+  /// other side of a thin wall and are left out).
+  bool with_free_points(const Rmls_surface& kept, Rmls_surface& spanning) const
+  {
+    spanning.members = kept.members;
+    for(std::size_t i = 0; i < local.size(); ++i)
+      if(!m_assigned[i])
+        spanning.members.push_back(i);
+    std::sort(spanning.members.begin(), spanning.members.end());
+    return refit(spanning.members, 1, spanning.height_field);
+  }
+
+  /// Every point of `local`, with their least-squares plane, in `all`; false if they determine
+  /// no plane.
+  bool all_points(Rmls_surface& all) const
+  {
+    all.members.resize(local.size());
+    std::iota(all.members.begin(), all.members.end(), std::size_t(0));
+    return refit(all.members, 1, all.height_field);
   }
 
   /// Splits the members of `s`, a plane (noisy data) that may span a crease, into the two sides
@@ -734,20 +776,34 @@ inline std::vector<Rmls_surface*> find_surfaces(Forward_search& search, const Ve
             && s.height_field.residual(p) < (*parallel)->height_field.residual(p))
       *parallel = &s;
   }
-  // Fewer than two distinct planes under noise: the first may span a crease.
-  if(degree == 1 && distinct.size() < 2 && !search.surfaces.empty())
+  // One distinct plane under noise: with the points beyond its tolerance, it may span a crease.
+  // Split alone, its members hold little of the crease (the tolerance kept them for fitting it):
+  // at 0.5% dB noise, the rim of a sphere cut at 30 degrees gave no curve, a 30-degree crease
+  // between planes 0 and 19% of its length (two samples); with the free points, 33-50% and 51-83%,
+  // once the wider split confirms them (see `Cell_projector::split_stands_wider()`).
+  search.split_off_crease = false;
+  if(degree == 1 && distinct.size() == 1)
   {
-    Rmls_surface a, b;
-    if(search.split_across_crease(search.surfaces.front(), Forward_search::smallest_surface(search.local.size()), a, b)
-       && std::abs(a.height_field.normal(p).dot(b.height_field.normal(p))) <= cos_sharp)
+    Rmls_surface spanning, a, b;
+    if(search.with_free_points(*distinct.front(), spanning)
+       && search.split_across_crease(spanning, Forward_search::smallest_surface(search.local.size()), a, b))
     {
       search.surfaces.push_back(std::move(a));
       search.surfaces.push_back(std::move(b));
       distinct.assign({&search.surfaces[search.surfaces.size() - 2], &search.surfaces.back()});
+      search.split_off_crease = true;
     }
   }
   if(distinct.size() >= 2)
+  {
     search.refine(distinct, scales.rmls_tolerance, degree, p);
+    // The split's planes, each fitted to a few points of the other side along the vertex line,
+    // lie closer together than the faces (30-degree creases at 0.5% dB noise gave 20 to 25
+    // degrees): only the refined planes tell whether the crease is sharp.
+    if(search.split_off_crease
+       && std::abs(distinct[0]->height_field.normal(p).dot(distinct[1]->height_field.normal(p))) > cos_sharp)
+      distinct.clear();
+  }
   return supported_surfaces(distinct);
 }
 
@@ -1262,9 +1318,11 @@ private:
   const Projection_parameters& m_parameters;
   std::vector<Projection>& m_projections;
   Forward_search m_search;
-  // The queries of the neighbourhoods of the means and of the sampled points, each of which
-  // starts from the radius of the previous one of its kind.
-  Point_index::Ranked_query m_query, m_sampled_query;
+  // The wider neighbourhood that confirms a split (see `split_stands_wider()`).
+  Forward_search m_wide;
+  // The queries of the neighbourhoods of the means, of the sampled points and of the wider
+  // neighbourhoods, each of which starts from the radius of the previous one of its kind.
+  Point_index::Ranked_query m_query, m_sampled_query, m_wide_query;
   std::vector<std::size_t> m_neighbors, m_own_search;
   // The lone plane of the last search in `project_first()`, if it failed with one (in
   // `m_search`, whose neighbourhood it was found in), for the next candidates of the cell.
@@ -1282,10 +1340,31 @@ private:
       m_search.local.push_back(m_input.points[j]);
     m_search.points_per_counted_point = 1;
     std::vector<Rmls_surface*> found = find_surfaces(m_search, p, m_scales, m_parameters);
+    if(!found.empty() && m_search.split_off_crease && !split_stands_wider(p))
+      found.clear();
     if(!found.empty() && m_input.refinement)
       found = refine_on_sampled_points(m_search, found, *m_input.refinement, p, m_scales, m_parameters,
                                        m_sampled_query, m_neighbors);
     return std::vector<const Rmls_surface*>(found.begin(), found.end());
+  }
+
+  // Whether the points nearest `p`, `split_confirmation_neighbors_factor` times as many as a
+  // stage-2 neighbourhood, split across a crease too (see
+  // `Forward_search_constants::split_confirmation_neighbors_factor`).
+  bool split_stands_wider(const Vec3& p)
+  {
+    m_input.index.nearest_ranked(p, Forward_search_constants::split_confirmation_neighbors_factor * m_scales.rmls_neighbors,
+                                 m_wide_query, m_neighbors);
+    m_wide.local.clear();
+    for(std::size_t j : m_neighbors)
+      m_wide.local.push_back(m_input.points[j]);
+    Rmls_surface all, a, b;
+    Vec3 line_point;
+    return m_wide.all_points(all)
+      && m_wide.split_across_crease(all, Forward_search::smallest_surface(m_wide.local.size()), a, b)
+      && closest_on_plane_intersection(p, a.height_field.foot(p), a.height_field.normal(p), b.height_field.foot(p),
+                                       b.height_field.normal(p), line_point)
+      && (line_point - p).norm() <= Surface_checks::largest_offset(m_search, m_scales);
   }
 
   // Under noise, the first two planes that the search around the candidate found, if parallel,
