@@ -273,21 +273,6 @@ TEST_CASE("surfaces found around one candidate serve a neighbour only where they
   CHECK_FALSE(sfe::surfaces_explain(search, surfaces, sfe::Vec3(0.99, 0, 0), tolerance));
 }
 
-namespace {
-
-/// The members of `surface` are every point of `search.local`, with their least-squares plane.
-void take_all_points(const sfe::Forward_search& search, sfe::Rmls_surface& surface)
-{
-  surface.members.resize(search.local.size());
-  std::iota(surface.members.begin(), surface.members.end(), std::size_t(0));
-  sfe::Local_frame frame;
-  sfe::Vec3 spread;
-  REQUIRE(sfe::principal_frame(search.local, surface.members, frame, spread));
-  REQUIRE(surface.height_field.fit(search.local, surface.members, frame, 1));
-}
-
-} // namespace
-
 TEST_CASE("a noisy plane tilted across a crease splits into the crease's sides, one over a cylinder does not",
           "[projection]")
 {
@@ -308,7 +293,7 @@ TEST_CASE("a noisy plane tilted across a crease splits into the crease's sides, 
                                 cylinder_radius * (1 - std::cos(angle)) + f.z);
   }
   sfe::Rmls_surface tilted, a, b;
-  take_all_points(fold, tilted);
+  REQUIRE(fold.all_points(tilted));
   REQUIRE(fold.split_across_crease(tilted, min_size, a, b));
   // Each side holds the points of one half, but for those the noise puts across the fold.
   std::size_t misplaced = 0;
@@ -326,7 +311,7 @@ TEST_CASE("a noisy plane tilted across a crease splits into the crease's sides, 
   CHECK(std::acos(cosine) * 180 / pi == Approx(70).margin(3));
 
   sfe::Rmls_surface round;
-  take_all_points(cylinder, round);
+  REQUIRE(cylinder.all_points(round));
   CHECK_FALSE(cylinder.split_across_crease(round, min_size, a, b));
 }
 

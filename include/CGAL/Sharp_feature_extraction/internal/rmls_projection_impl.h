@@ -807,6 +807,17 @@ inline std::vector<Rmls_surface*> find_surfaces(Forward_search& search, const Ve
   return supported_surfaces(distinct);
 }
 
+/// Fills `search.local` with the `k` points of `indexed` nearest `p`, nearest first (`query`
+/// and `nearest` are the caller's workspace).
+inline void load_nearest(const Indexed_points& indexed, const Vec3& p, std::size_t k, Point_index::Ranked_query& query,
+                         std::vector<std::size_t>& nearest, Forward_search& search)
+{
+  indexed.index.nearest_ranked(p, k, query, nearest);
+  search.local.clear();
+  for(std::size_t j : nearest)
+    search.local.push_back(indexed.points[j]);
+}
+
 /// Refines `found`, the surfaces that `find_surfaces()` found around `p` on the means of the
 /// sampled points (see `Sharp_feature_scales::search_fraction`), on the sampled points nearest
 /// `p` that span the radius of a stage-2 neighbourhood of means, which replace the means in
@@ -819,10 +830,7 @@ inline std::vector<Rmls_surface*> refine_on_sampled_points(Forward_search& searc
                                                            Point_index::Ranked_query& query,
                                                            std::vector<std::size_t>& nearest)
 {
-  sampled.index.nearest_ranked(p, scales_of_sampled_points(scales).rmls_neighbors, query, nearest);
-  search.local.clear();
-  for(std::size_t j : nearest)
-    search.local.push_back(sampled.points[j]);
+  load_nearest(sampled, p, scales_of_sampled_points(scales).rmls_neighbors, query, nearest, search);
   search.points_per_counted_point = sampled_points_per_mean(scales);
   search.refine(found, scales.rmls_tolerance, surface_degree(scales, parameters), p);
   return supported_surfaces(found);
@@ -1334,10 +1342,7 @@ private:
   std::vector<const Rmls_surface*> surfaces_around(std::size_t position)
   {
     const Vec3& p = m_input.points[position];
-    m_input.index.nearest_ranked(p, m_scales.rmls_neighbors, m_query, m_neighbors);
-    m_search.local.clear();
-    for(std::size_t j : m_neighbors)
-      m_search.local.push_back(m_input.points[j]);
+    load_nearest(m_input, p, m_scales.rmls_neighbors, m_query, m_neighbors, m_search);
     m_search.points_per_counted_point = 1;
     std::vector<Rmls_surface*> found = find_surfaces(m_search, p, m_scales, m_parameters);
     if(!found.empty() && m_search.split_off_crease && !split_stands_wider(p))
@@ -1353,11 +1358,8 @@ private:
   // `Forward_search_constants::split_confirmation_neighbors_factor`).
   bool split_stands_wider(const Vec3& p)
   {
-    m_input.index.nearest_ranked(p, Forward_search_constants::split_confirmation_neighbors_factor * m_scales.rmls_neighbors,
-                                 m_wide_query, m_neighbors);
-    m_wide.local.clear();
-    for(std::size_t j : m_neighbors)
-      m_wide.local.push_back(m_input.points[j]);
+    load_nearest(m_input, p, Forward_search_constants::split_confirmation_neighbors_factor * m_scales.rmls_neighbors,
+                 m_wide_query, m_neighbors, m_wide);
     Rmls_surface all, a, b;
     Vec3 line_point;
     return m_wide.all_points(all)
